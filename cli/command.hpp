@@ -1,0 +1,38 @@
+#pragma once
+// Subcommand registry. Each cmd_*.cpp defines one subcommand and registers it with
+//   static const splinefig::cli::Registration reg{"eval", "Evaluate a spline ...", setup};
+// where setup(CLI::App&) adds the options and returns the function that runs it.
+// The function returns the process exit code; it reports errors by throwing
+// splinefig::cli::Failure (one line, printed as "splinefig NAME: message").
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace splinefig::cli {
+
+using Runner = std::function<int()>;
+using Setup = std::function<Runner(CLI::App&)>;
+
+struct Command {
+  std::string name;
+  std::string description;
+  Setup setup;
+};
+
+std::vector<Command>& registry();
+
+struct Registration {
+  Registration(std::string name, std::string description, Setup setup) {
+    registry().push_back({std::move(name), std::move(description), std::move(setup)});
+  }
+};
+
+// A user-facing error: one line naming what is wrong and where; exit code `code`.
+struct Failure : std::runtime_error {
+  int code;
+  explicit Failure(const std::string& what, int code = 2) : std::runtime_error(what), code(code) {}
+};
+
+}  // namespace splinefig::cli

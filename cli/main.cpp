@@ -1,0 +1,64 @@
+// splinefig: the command line. Subcommands register themselves (command.hpp).
+#include "command.hpp"
+
+#include <splinefig/version.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <map>
+
+namespace splinefig::cli {
+std::vector<Command>& registry() {
+  static std::vector<Command> commands;
+  return commands;
+}
+}  // namespace splinefig::cli
+
+int main(int argc, char** argv) {
+  using namespace splinefig::cli;
+  CLI::App app{"splinefig: cubic splines turned into exact pictures", "splinefig"};
+  app.set_version_flag("--version", std::string("splinefig ") + SPLINEFIG_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  auto& commands = registry();
+  std::sort(commands.begin(), commands.end(),
+            [](const Command& a, const Command& b) { return a.name < b.name; });
+  std::map<CLI::App*, Runner> runners;
+  std::map<CLI::App*, std::string> names;
+  for (auto& c : commands) {
+    CLI::App* sub = app.add_subcommand(c.name, c.description);
+    runners[sub] = c.setup(*sub);
+    names[sub] = c.name;
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    std::replace(msg.begin(), msg.end(), '\n', ' ');
+    std::cerr << "splinefig: " << msg << " (see splinefig --help)\n";
+    return 2;
+  }
+
+  for (CLI::App* sub : app.get_subcommands()) {
+    try {
+      return runners.at(sub)();
+    } catch (const Failure& e) {
+      std::cerr << "splinefig " << names[sub] << ": " << e.what() << "\n";
+      return e.code;
+    } catch (const std::exception& e) {
+      std::cerr << "splinefig " << names[sub] << ": " << e.what() << "\n";
+      return 2;
+    }
+  }
+  return 2;
+}

@@ -1,0 +1,125 @@
+#pragma once
+// splinefig's renderer: exact-area antialiased drawing into linear-light float images.
+// No spline knowledge here. Geometry (paths, strokes, dashes) -> coverage -> pixels.
+//
+// Conventions (CONTRACT.md): (0,0) is the top-left corner of the top-left pixel, y down,
+// pixel (i,j) has centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha
+// at the API; the image holds premultiplied linear RGBA float32, composited with
+// Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace splinefig::render {
+
+struct Vec2 {
+  double x = 0, y = 0;
+};
+
+struct Color {  // linear light, straight alpha
+  float r = 0, g = 0, b = 0, a = 1;
+};
+// "#rrggbb" or "#rrggbbaa" (sRGB) -> linear; nullopt if it is not such a string.
+std::optional<Color> parse_hex_color(std::string_view hex);
+float srgb_to_linear(float v);
+float linear_to_srgb(float v);
+
+enum class Join { Miter, Round, Bevel };
+enum class Cap { Butt, Round, Square };
+enum class FillRule { NonZero, EvenOdd };
+
+struct StrokeStyle {
+  double width = 1.0;
+  Join join = Join::Miter;
+  double miter_limit = 4.0;  // SVG semantics: miter length / width above this -> bevel
+  Cap cap = Cap::Butt;
+  std::vector<double> dashes;  // on/off lengths in pixels; empty = solid
+  double dash_offset = 0.0;
+};
+
+// A separable pixel filter k(x) k(y) given as a piecewise polynomial on unit intervals:
+// piece p covers [lo + p, lo + p + 1) and holds coefficients in ascending powers of the
+// local variable u = x - (lo + p) in [0, 1). Box is the default (exact area coverage).
+// The figures layer converts spline basis functions into this form.
+struct PixelFilter {
+  enum class Kind { Box, Piecewise } kind = Kind::Box;
+  double lo = -0.5;
+  std::vector<std::vector<double>> pieces;
+  std::string name = "box";
+
+  static PixelFilter box();
+  static PixelFilter tent();  // the linear B-spline, support [-1, 1]
+};
+
+enum class Marker { Circle, Square, Diamond, Cross, Plus };
+enum class HAlign { Left, Center, Right };
+enum class VAlign { Baseline, Middle, Top, Bottom };
+
+struct TextStyle {
+  double size = 14.0;  // font size in pixels
+  Color color{0, 0, 0, 1};
+  HAlign halign = HAlign::Left;
+  VAlign valign = VAlign::Baseline;
+  std::string font = "DejaVuSans";  // OpenImageIO font name
+};
+
+struct TextExtent {
+  double width = 0, ascent = 0, descent = 0;  // pixels
+};
+TextExtent measure_text(std::string_view text, const TextStyle& style);
+
+// Premultiplied linear RGBA float32, row-major, 4 floats per pixel.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+  float* pixel(int x, int y) { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+  const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+};
+
+// A drawing: a display list, rasterized at once (by tiles or bands, on any number of
+// threads, with byte-identical results). Items are composited in the order added.
+class Scene {
+ public:
+  Scene(int width, int height, Color background = {1, 1, 1, 1}, PixelFilter filter = PixelFilter::box());
+
+  void stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color);
+  void fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color);
+  void fill_circle(Vec2 centre, double radius, Color color);
+  void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color);
+  void marker(Marker shape, Vec2 centre, double size, Color fill);
+  void text(std::string_view text, Vec2 anchor, const TextStyle& style);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  struct Item;  // defined by the implementation
+  const std::vector<Item>& items() const;
+
+  Scene(Scene&&) noexcept;
+  Scene& operator=(Scene&&) noexcept;
+  ~Scene();
+
+ private:
+  int width_, height_;
+  Color background_;
+  PixelFilter filter_;
+  std::vector<Item>* items_;  // owned
+  friend Image rasterize(const Scene&, int threads);
+};
+
+// threads <= 0: all hardware threads.
+Image rasterize(const Scene& scene, int threads = 0);
+
+struct WriteOptions {
+  std::string software;     // "splinefig 0.1.0" by default
+  std::string description;  // e.g. the spec name
+};
+// Writes PNG (8-bit sRGB with alpha, straight alpha) or EXR (float32 linear RGBA), chosen by
+// the extension, to a temporary file in the same directory that is then renamed.
+// Throws std::runtime_error naming the path on failure; never leaves a partial file.
+void write_image(const Image& image, const std::string& path, const WriteOptions& options = {});
+
+}  // namespace splinefig::render

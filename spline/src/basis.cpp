@@ -1,0 +1,214 @@
+// The memo's basis matrices, its spec syntax, and the basis functions.
+#include <splinefig/spline/basis.hpp>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace splinefig {
+namespace {
+
+std::string fmt(double v) {
+  std::array<char, 32> buf{};
+  auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  (void)ec;
+  return std::string(buf.data(), end);
+}
+
+Basis cubic(std::string family, std::string spec, std::array<double, 16> m) {
+  return Basis{std::move(family), std::move(spec), 3, std::vector<double>(m.begin(), m.end())};
+}
+
+}  // namespace
+
+Basis cardinal(double a) {
+  // C_a = M1^-1 M2: X(0) = x0, X(1) = x1, X'(0) = a(x1 - x-1), X'(1) = a(x2 - x0).
+  return cubic("cardinal", "cardinal:a=" + fmt(a),
+               {-a, 2 - a, a - 2, a,        //
+                2 * a, a - 3, 3 - 2 * a, -a,  //
+                -a, 0, a, 0,                //
+                0, 1, 0, 0});
+}
+
+Basis catmull_rom() {
+  Basis b = cardinal(0.5);
+  b.spec = "catmull-rom";
+  return b;
+}
+
+Basis bspline() {
+  // Each entry is an integer over 6, rounded once.
+  return cubic("bspline", "bspline",
+               {-1 / 6.0, 3 / 6.0, -3 / 6.0, 1 / 6.0,  //
+                3 / 6.0, -6 / 6.0, 3 / 6.0, 0,         //
+                -3 / 6.0, 0, 3 / 6.0, 0,               //
+                1 / 6.0, 4 / 6.0, 1 / 6.0, 0});
+}
+
+Basis tensioned_bspline(double a) {
+  // Duff's B_a; B_1 = B, and B_a = B_{1, 12(1-a)/a} (Barsky).
+  return cubic("tensioned-bspline", "tensioned-bspline:a=" + fmt(a),
+               {-a / 6, (12 - 9 * a) / 6, (9 * a - 12) / 6, a / 6,  //
+                3 * a / 6, (12 * a - 18) / 6, (18 - 15 * a) / 6, 0,  //
+                -3 * a / 6, 0, 3 * a / 6, 0,                         //
+                a / 6, (6 - 2 * a) / 6, a / 6, 0});
+}
+
+Basis beta(double b1, double b2) {
+  const double s2 = b1 * b1, s3 = s2 * b1;
+  const double d = b2 + 2 * s3 + 4 * s2 + 4 * b1 + 2;
+  if (d == 0 || !std::isfinite(d))
+    throw SpecError("beta: no matrix for b1=" + fmt(b1) + ", b2=" + fmt(b2) +
+                    ": its denominator d = b2 + 2b1^3 + 4b1^2 + 4b1 + 2 is zero");
+  return cubic("beta", "beta:b1=" + fmt(b1) + ",b2=" + fmt(b2),
+               {-2 * s3 / d, 2 * (b2 + s3 + s2 + b1) / d, -2 * (b2 + s2 + b1 + 1) / d, 2 / d,  //
+                6 * s3 / d, -3 * (b2 + 2 * s3 + 2 * s2) / d, 3 * (b2 + 2 * s2) / d, 0,         //
+                -6 * s3 / d, 6 * (s3 - b1) / d, 6 * b1 / d, 0,                                //
+                2 * s3 / d, (b2 + 4 * (s2 + b1)) / d, 2 / d, 0});
+}
+
+Basis uniform_bspline(int n) {
+  if (n < 1 || n > 20)
+    throw SpecError("uniform-bspline: degree=" + std::to_string(n) + " is out of range (1..20)");
+  // Seed 002 §4.16.10: m_ij = 1/n! C(n,i) sum_{k=j..n} (n-k)^i (-1)^(k-j) C(n+1,k-j),
+  // row i multiplying t^(n-i). Summed exactly in 128-bit integers, divided once.
+  using i128 = __int128;
+  auto binom = [](int a, int b) {
+    i128 r = 1;
+    for (int t = 1; t <= b; ++t) r = r * (a - b + t) / t;
+    return r;
+  };
+  i128 fact = 1;
+  for (int t = 2; t <= n; ++t) fact *= t;
+  Basis b{"uniform-bspline", "uniform-bspline:degree=" + std::to_string(n), n, {}};
+  b.m.resize(static_cast<size_t>((n + 1) * (n + 1)));
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      i128 sum = 0;
+      for (int k = j; k <= n; ++k) {
+        i128 p = 1;
+        for (int e = 0; e < i; ++e) p *= (n - k);
+        const i128 term = p * binom(n + 1, k - j);
+        sum += ((k - j) % 2 ? -term : term);
+      }
+      sum *= binom(n, i);
+      b.m[static_cast<size_t>(i * (n + 1) + j)] = static_cast<double>(sum) / static_cast<double>(fact);
+    }
+  return b;
+}
+
+namespace {
+
+double parse_number(std::string_view name, std::string_view key, std::string_view text) {
+  double v = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (!text.empty() && *first == '+') ++first;
+  auto [ptr, ec] = std::from_chars(first, last, v);
+  if (text.empty() || ec != std::errc() || ptr != last)
+    throw SpecError(std::string(name) + ": value of '" + std::string(key) + "' is not a number: '" +
+                    std::string(text) + "'");
+  if (!std::isfinite(v))
+    throw SpecError(std::string(name) + ": value of '" + std::string(key) + "' is not finite: '" +
+                    std::string(text) + "'");
+  return v;
+}
+
+}  // namespace
+
+Basis parse_basis(std::string_view spec) {
+  const auto colon = spec.find(':');
+  const std::string_view name = spec.substr(0, colon);
+  std::map<std::string, double, std::less<>> params;
+  std::map<std::string, std::string, std::less<>> raw;
+  if (colon != std::string_view::npos) {
+    std::string_view rest = spec.substr(colon + 1);
+    if (rest.empty()) throw SpecError(std::string(name) + ": empty parameter list after ':'");
+    while (true) {
+      const auto comma = rest.find(',');
+      const std::string_view item = rest.substr(0, comma);
+      const auto eq = item.find('=');
+      if (eq == std::string_view::npos || eq == 0)
+        throw SpecError(std::string(name) + ": parameter '" + std::string(item) + "' is not key=value");
+      const std::string key(item.substr(0, eq));
+      if (raw.count(key)) throw SpecError(std::string(name) + ": parameter '" + key + "' given twice");
+      raw[key] = std::string(item.substr(eq + 1));
+      if (comma == std::string_view::npos) break;
+      rest = rest.substr(comma + 1);
+    }
+  }
+  auto take = [&](std::initializer_list<std::pair<const char*, double>> allowed) {
+    for (const auto& [key, text] : raw) {
+      bool ok = false;
+      for (const auto& a : allowed) ok = ok || key == a.first;
+      if (!ok) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + std::string(a.first);
+        throw SpecError(std::string(name) + ": unknown parameter '" + key + "'" +
+                        (list.empty() ? " (it takes none)" : " (known: " + list + ")"));
+      }
+      params[key] = parse_number(name, key, text);
+    }
+    for (const auto& a : allowed)
+      if (!params.count(a.first)) params[a.first] = a.second;
+  };
+
+  if (name == "catmull-rom") {
+    take({});
+    return catmull_rom();
+  }
+  if (name == "cardinal") {
+    take({{"a", 0.5}});
+    return cardinal(params["a"]);
+  }
+  if (name == "bspline") {
+    take({});
+    return bspline();
+  }
+  if (name == "tensioned-bspline") {
+    take({{"a", 1.0}});
+    return tensioned_bspline(params["a"]);
+  }
+  if (name == "beta") {
+    take({{"b1", 1.0}, {"b2", 0.0}});
+    return beta(params["b1"], params["b2"]);
+  }
+  if (name == "uniform-bspline") {
+    take({{"degree", 3.0}});
+    const double d = params["degree"];
+    if (d != std::floor(d))
+      throw SpecError("uniform-bspline: degree=" + raw["degree"] + " is not an integer");
+    if (d < 1 || d > 20)
+      throw SpecError("uniform-bspline: degree=" + raw["degree"] + " is out of range (1..20)");
+    return uniform_bspline(static_cast<int>(d));
+  }
+  throw SpecError("unknown basis '" + std::string(name) +
+                  "' (known: catmull-rom, cardinal, bspline, tensioned-bspline, beta, uniform-bspline)");
+}
+
+double basis_segment(const Basis& b, int c, double u) {
+  const int n = b.degree;
+  double v = b(0, c);
+  for (int r = 1; r <= n; ++r) v = v * u + b(r, c);
+  return v;
+}
+
+Support kernel_support(const Basis& b) {
+  const int h = (b.degree - 1) / 2;
+  return {static_cast<double>(h - b.degree), static_cast<double>(h + 1)};
+}
+
+double kernel(const Basis& b, double s) {
+  const int n = b.degree;
+  const int h = (n - 1) / 2;
+  if (!(s >= h - n && s <= h + 1)) return 0.0;
+  // Column c covers [h-c, h-c+1); the right end h+1 belongs to column 0.
+  int c = h - static_cast<int>(std::floor(s));
+  if (c < 0) c = 0;
+  if (c > n) c = n;
+  return basis_segment(b, c, s - (h - c));
+}
+
+}  // namespace splinefig

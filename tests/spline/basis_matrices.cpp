@@ -1,0 +1,96 @@
+// The memo's matrices, entered here by hand from the memo's text, and the identities
+// C_a = M1^-1 M2, B = B_1 = B_{1,0}, B_a = B_{1,12(1-a)/a}.
+#include <catch2/catch.hpp>
+#include <splinefig/spline/basis.hpp>
+
+using namespace splinefig;
+
+namespace {
+void check_matrix(const Basis& b, const double (&expect)[4][4], double tol = 0) {
+  REQUIRE(b.degree == 3);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      INFO("row " << r << " col " << c);
+      if (tol == 0)
+        CHECK(b(r, c) == expect[r][c]);
+      else
+        CHECK(b(r, c) == Approx(expect[r][c]).margin(tol));
+    }
+}
+}  // namespace
+
+TEST_CASE("Catmull-Rom matrix is the memo's C = 1/2 [...]") {
+  const double C[4][4] = {{-0.5, 1.5, -1.5, 0.5}, {1, -2.5, 2, -0.5}, {-0.5, 0, 0.5, 0}, {0, 1, 0, 0}};
+  check_matrix(catmull_rom(), C);
+  check_matrix(parse_basis("catmull-rom"), C);
+  check_matrix(parse_basis("cardinal"), C);
+  check_matrix(parse_basis("cardinal:a=0.5"), C);
+}
+
+TEST_CASE("B-spline matrix is the memo's B = 1/6 [...]") {
+  const double B[4][4] = {{-1 / 6.0, 3 / 6.0, -3 / 6.0, 1 / 6.0},
+                          {3 / 6.0, -6 / 6.0, 3 / 6.0, 0},
+                          {-3 / 6.0, 0, 3 / 6.0, 0},
+                          {1 / 6.0, 4 / 6.0, 1 / 6.0, 0}};
+  check_matrix(bspline(), B);
+  check_matrix(tensioned_bspline(1.0), B, 1e-16);
+  check_matrix(beta(1.0, 0.0), B, 1e-16);
+  check_matrix(uniform_bspline(3), B, 1e-16);
+}
+
+TEST_CASE("Cardinal C_a = M1^-1 M2 for several a") {
+  // M1^-1 for M1 = [0 0 0 1; 1 1 1 1; 0 0 1 0; 3 2 1 0] (hand-inverted: Hermite matrix).
+  const double M1inv[4][4] = {{2, -2, 1, 1}, {-3, 3, -2, -1}, {0, 0, 1, 0}, {1, 0, 0, 0}};
+  for (double a : {0.0, 0.25, 0.5, 1.0, -0.3, 2.0}) {
+    const double M2[4][4] = {{0, 1, 0, 0}, {0, 0, 1, 0}, {-a, 0, a, 0}, {0, -a, 0, a}};
+    double P[4][4] = {};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 4; ++k) P[r][c] += M1inv[r][k] * M2[k][c];
+    INFO("a = " << a);
+    check_matrix(cardinal(a), P, 1e-15);
+  }
+}
+
+TEST_CASE("Duff's B_a equals Barsky's B_{1, 12(1-a)/a}") {
+  for (double a : {1.0, 0.5, 0.25, 0.1, 2.0}) {
+    const Basis d = tensioned_bspline(a), b = beta(1.0, 12 * (1 - a) / a);
+    INFO("a = " << a);
+    for (int i = 0; i < 16; ++i) CHECK(d.m[i] == Approx(b.m[i]).margin(1e-14));
+  }
+}
+
+TEST_CASE("Kernel values: Catmull-Rom k(0)=1, min -2/27 at 4/3; B-spline 2/3, 1/6") {
+  const Basis c = catmull_rom(), b = bspline();
+  CHECK(kernel(c, 0) == 1.0);
+  CHECK(kernel(c, 1) == 0.0);
+  CHECK(kernel(c, -1) == 0.0);
+  CHECK(kernel(c, 2) == 0.0);
+  CHECK(kernel(c, 4.0 / 3) == Approx(-2.0 / 27).epsilon(1e-14));
+  CHECK(kernel(c, -4.0 / 3) == Approx(-2.0 / 27).epsilon(1e-14));
+  CHECK(kernel(b, 0) == Approx(2.0 / 3).epsilon(1e-15));
+  CHECK(kernel(b, 1) == Approx(1.0 / 6).epsilon(1e-15));
+  CHECK(kernel(b, -1) == Approx(1.0 / 6).epsilon(1e-15));
+  CHECK(kernel(b, 2) == 0.0);
+  CHECK(kernel(b, 3) == 0.0);
+}
+
+TEST_CASE("Invalid basis specs name what is wrong") {
+  auto msg = [](const char* s) {
+    try {
+      parse_basis(s);
+    } catch (const SpecError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK_THAT(msg("bezier"), Catch::Contains("unknown basis 'bezier'"));
+  CHECK_THAT(msg("cardinal:b=1"), Catch::Contains("unknown parameter 'b'"));
+  CHECK_THAT(msg("cardinal:a=nan"), Catch::Contains("not finite"));
+  CHECK_THAT(msg("cardinal:a=x"), Catch::Contains("not a number"));
+  CHECK_THAT(msg("beta:b1=-1,b2=0"), Catch::Contains("is zero"));
+  CHECK_THAT(msg("catmull-rom:a=1"), Catch::Contains("takes none"));
+  CHECK_THAT(msg("uniform-bspline:degree=2.5"), Catch::Contains("not an integer"));
+  CHECK_THAT(msg("uniform-bspline:degree=0"), Catch::Contains("out of range"));
+  CHECK_THAT(msg("cardinal:a=1,a=2"), Catch::Contains("given twice"));
+}
