@@ -203,7 +203,9 @@ Support kernel_support(const Basis& b) {
 double kernel(const Basis& b, double s) {
   const int n = b.degree;
   const int h = (n - 1) / 2;
-  if (!(s >= h - n && s <= h + 1)) return 0.0;
+  // Every family here is continuous at the ends of its support, so k = 0 there exactly
+  // (Horner at u = 1 would leave a rounding residue of the column sum).
+  if (!(s > h - n && s < h + 1)) return 0.0;
   // Column c covers [h-c, h-c+1); the right end h+1 belongs to column 0.
   int c = h - static_cast<int>(std::floor(s));
   if (c < 0) c = 0;

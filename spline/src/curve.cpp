@@ -1,0 +1,201 @@
+// Curves through knots: end modes, evaluation at t, and the memo's sampling at `grain`.
+#include <splinefig/spline/curve.hpp>
+#include <splinefig/spline/segment.hpp>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace splinefig {
+
+Ends parse_ends(std::string_view s) {
+  if (s == "open") return Ends::open;
+  if (s == "double" || s == "doubled") return Ends::doubled;
+  if (s == "closed") return Ends::closed;
+  throw std::invalid_argument("unknown end mode '" + std::string(s) + "' (known: open, double, closed)");
+}
+
+const char* to_string(Ends e) {
+  switch (e) {
+    case Ends::open: return "open";
+    case Ends::doubled: return "double";
+    case Ends::closed: return "closed";
+  }
+  return "?";
+}
+
+std::size_t min_knots(const Basis& b, Ends ends) {
+  const std::size_t d = static_cast<std::size_t>(b.degree);
+  switch (ends) {
+    case Ends::open: return d + 1;
+    case Ends::doubled: return std::max<std::size_t>(2, d - 1);
+    case Ends::closed: return 3;
+  }
+  return d + 1;
+}
+
+Curve make_curve(const Basis& b, const Points& knots, Ends ends) {
+  const std::size_t n = knots.size();
+  if (n == 0 || knots.dim < 1) throw CurveError("no knots");
+  const std::size_t need = min_knots(b, ends);
+  if (n < need)
+    throw CurveError("too few knots: " + std::to_string(n) + " given, " + b.spec + " with " +
+                     to_string(ends) + " ends needs at least " + std::to_string(need));
+  Curve c{b, ends, n, Points(knots.dim)};
+  Points& p = c.control;
+  switch (ends) {
+    case Ends::open:
+      p = knots;
+      break;
+    case Ends::doubled:
+      p.coords.reserve((n + 2) * static_cast<std::size_t>(knots.dim));
+      p.push_back(knots[0]);
+      p.coords.insert(p.coords.end(), knots.coords.begin(), knots.coords.end());
+      p.push_back(knots[n - 1]);
+      break;
+    case Ends::closed: {
+      // The memo's cyclic spline: for the cubic, last knot in front, first two behind.
+      const std::size_t d = static_cast<std::size_t>(b.degree), h = (d - 1) / 2;
+      p.coords.reserve((n + d) * static_cast<std::size_t>(knots.dim));
+      for (std::size_t j = 0; j < n + d; ++j) p.push_back(knots[(j + n * (h + 1) - h) % n]);
+      break;
+    }
+  }
+  return c;
+}
+
+void piece_coefficients(const Curve& c, std::size_t i, std::span<double> a) {
+  segment_coefficients(c.basis, c.piece_control(i), c.dim(), a);
+}
+
+PieceParameter locate(const Curve& c, double t) {
+  const std::size_t s = c.segments();
+  if (!(t > 0)) return {0, 0.0};  // also NaN
+  if (t >= static_cast<double>(s)) return {s - 1, 1.0};
+  const double f = std::floor(t);
+  std::size_t i = static_cast<std::size_t>(f);
+  if (i >= s) i = s - 1;
+  return {i, t - static_cast<double>(i)};
+}
+
+void evaluate(const Curve& c, double t, int derivative, std::span<double> out) {
+  const PieceParameter pp = locate(c, t);
+  double a[64 * 8];
+  std::vector<double> big;
+  const std::size_t need = static_cast<std::size_t>(c.basis.order() * c.dim());
+  std::span<double> coef(a, need);
+  if (need > std::size(a)) {
+    big.resize(need);
+    coef = big;
+  }
+  piece_coefficients(c, pp.piece, coef);
+  segment_point(coef, c.degree(), c.dim(), pp.u, derivative, out);
+}
+
+std::size_t sample_count(const Curve& c, int grain) {
+  if (grain < 1) throw CurveError("grain must be at least 1, got " + std::to_string(grain));
+  const std::size_t s = c.segments(), g = static_cast<std::size_t>(grain);
+  const std::size_t limit = std::numeric_limits<std::size_t>::max() / 8 /
+                            static_cast<std::size_t>(std::max(1, c.dim()));
+  if (s > (limit - 1) / g) throw CurveError("too many points: " + std::to_string(s) + " pieces x grain " +
+                                            std::to_string(grain));
+  return s * g + 1;
+}
+
+namespace {
+
+// One piece after another: out[k] = sum_c E_c[k] q_c[k], where E_c[j*D + d] = w_c(j/grain)
+// (the weight table, computed once) and q_c repeats control point c's coordinates with
+// period D. Blocks of L = lcm(D, 4) outputs use one register pattern per control point, so
+// each output coordinate costs order multiply-adds and the stores are contiguous.
+template <int D>
+void sample_cubic(const double* ctrl, std::size_t pieces, int grain, const double* E, double* out) {
+  constexpr int L = D == 3 ? 12 : (D == 1 || D == 2 || D == 4) ? 4 : D * 4;
+  const std::size_t K = static_cast<std::size_t>(grain) * D;
+  const std::size_t Kb = K - K % L;
+  const double *E0 = E, *E1 = E + K, *E2 = E + 2 * K, *E3 = E + 3 * K;
+  for (std::size_t i = 0; i < pieces; ++i) {
+    const double* p = ctrl + i * D;
+    double q0[L], q1[L], q2[L], q3[L];
+    for (int m = 0; m < L; ++m) {
+      q0[m] = p[m % D];
+      q1[m] = p[D + m % D];
+      q2[m] = p[2 * D + m % D];
+      q3[m] = p[3 * D + m % D];
+    }
+    double* o = out + i * K;
+    for (std::size_t k = 0; k < Kb; k += L)
+      for (int m = 0; m < L; ++m)
+        o[k + m] = E0[k + m] * q0[m] + E1[k + m] * q1[m] + E2[k + m] * q2[m] + E3[k + m] * q3[m];
+    for (std::size_t k = Kb; k < K; ++k) {
+      const std::size_t m = k % D;
+      o[k] = E0[k] * q0[m] + E1[k] * q1[m] + E2[k] * q2[m] + E3[k] * q3[m];
+    }
+  }
+}
+
+// Any degree, any dimension: the same sums, without the fixed-size patterns.
+void sample_generic(const double* ctrl, std::size_t pieces, int grain, int order, int dim,
+                    const double* E, double* out) {
+  const std::size_t K = static_cast<std::size_t>(grain) * static_cast<std::size_t>(dim);
+  for (std::size_t i = 0; i < pieces; ++i) {
+    const double* p = ctrl + i * static_cast<std::size_t>(dim);
+    double* o = out + i * K;
+    for (std::size_t k = 0; k < K; ++k) {
+      const std::size_t d = k % static_cast<std::size_t>(dim);
+      double v = E[k] * p[d];
+      for (int c = 1; c < order; ++c) v += E[static_cast<std::size_t>(c) * K + k] * p[static_cast<std::size_t>(c * dim) + d];
+      o[k] = v;
+    }
+  }
+}
+
+}  // namespace
+
+void sample_into(const Curve& c, int grain, int derivative, std::span<double> out) {
+  const std::size_t count = sample_count(c, grain);
+  const int dim = c.dim(), order = c.basis.order();
+  assert(out.size() == count * static_cast<std::size_t>(dim));
+  (void)count;
+  const std::size_t K = static_cast<std::size_t>(grain) * static_cast<std::size_t>(dim);
+  // Weight table, expanded per coordinate: E[c*K + j*dim + d] = w_c(j/grain).
+  std::vector<double> E(static_cast<std::size_t>(order) * K), w(static_cast<std::size_t>(order));
+  for (int j = 0; j < grain; ++j) {
+    basis_weights(c.basis, static_cast<double>(j) / grain, derivative, w);
+    for (int col = 0; col < order; ++col)
+      for (int d = 0; d < dim; ++d)
+        E[static_cast<std::size_t>(col) * K + static_cast<std::size_t>(j * dim + d)] = w[static_cast<std::size_t>(col)];
+  }
+  const std::size_t pieces = c.segments();
+  const double* ctrl = c.control.coords.data();
+  double* o = out.data();
+  if (order == 4 && dim == 1) sample_cubic<1>(ctrl, pieces, grain, E.data(), o);
+  else if (order == 4 && dim == 2) sample_cubic<2>(ctrl, pieces, grain, E.data(), o);
+  else if (order == 4 && dim == 3) sample_cubic<3>(ctrl, pieces, grain, E.data(), o);
+  else if (order == 4 && dim == 4) sample_cubic<4>(ctrl, pieces, grain, E.data(), o);
+  else sample_generic(ctrl, pieces, grain, order, dim, E.data(), o);
+
+  // The final point: u = 1 of the last piece; for a closed curve's position, the first point.
+  double* last = o + pieces * K;
+  if (c.ends == Ends::closed && derivative == 0) {
+    std::copy(o, o + dim, last);
+  } else {
+    basis_weights(c.basis, 1.0, derivative, w);
+    const double* p = ctrl + (pieces - 1) * static_cast<std::size_t>(dim);
+    for (int d = 0; d < dim; ++d) {
+      double v = w[0] * p[d];
+      for (int col = 1; col < order; ++col) v += w[static_cast<std::size_t>(col)] * p[col * dim + d];
+      last[d] = v;
+    }
+  }
+}
+
+Points sample(const Curve& c, int grain, int derivative) {
+  Points out(c.dim(), sample_count(c, grain));
+  sample_into(c, grain, derivative, out.coords);
+  return out;
+}
+
+}  // namespace splinefig
