@@ -34,6 +34,14 @@ int main(int argc, char** argv) {
     names[sub] = c.name;
   }
 
+  if (argc > 1 && argv[1][0] != '-' &&
+      std::none_of(commands.begin(), commands.end(), [&](const Command& c) { return c.name == argv[1]; })) {
+    std::string known;
+    for (const auto& c : commands) known += (known.empty() ? "" : ", ") + c.name;
+    std::cerr << "splinefig: unknown command '" << argv[1] << "' (commands: " << known << "; see splinefig --help)\n";
+    return 2;
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

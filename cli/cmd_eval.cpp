@@ -1,0 +1,91 @@
+// `splinefig eval`: knots on stdin -> points on the curve on stdout (CONTRACT.md).
+#include "command.hpp"
+#include "csv.hpp"
+
+#include <splinefig/spline/arclength.hpp>
+#include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/curve.hpp>
+
+#include <iostream>
+
+namespace {
+
+using namespace splinefig;
+using splinefig::cli::Failure;
+
+struct Options {
+  std::string basis, grain = "16", ends = "open", derivative = "0", spacing = "parameter", count;
+};
+
+// Output points above this many are refused rather than exhausting memory.
+constexpr long long max_points = 1LL << 28;
+
+int run(const Options& o) {
+  Basis b;
+  try {
+    b = parse_basis(o.basis);
+  } catch (const SpecError& e) {
+    throw Failure(std::string("--basis: ") + e.what());
+  }
+  const int grain = static_cast<int>(cli::parse_integer(o.grain, "--grain", 1, 1 << 24));
+  const int derivative = static_cast<int>(cli::parse_integer(o.derivative, "--derivative", 0, 2));
+  Ends ends;
+  try {
+    ends = parse_ends(o.ends);
+  } catch (const std::invalid_argument& e) {
+    throw Failure(std::string("--ends: ") + e.what());
+  }
+  if (o.spacing != "parameter" && o.spacing != "arclength" && o.spacing != "polygon")
+    throw Failure("--spacing: unknown spacing '" + o.spacing + "' (known: parameter, arclength, polygon)");
+  const bool by_length = o.spacing != "parameter";
+  if (by_length && o.count.empty()) throw Failure("--spacing " + o.spacing + " needs --count N");
+  if (!by_length && !o.count.empty()) throw Failure("--count needs --spacing arclength (or polygon)");
+  const long long count = by_length ? cli::parse_integer(o.count, "--count", 2, max_points) : 0;
+
+  const Points knots = cli::read_points(std::cin, "stdin");
+  Curve c;
+  try {
+    c = make_curve(b, knots, ends);
+  } catch (const CurveError& e) {
+    throw Failure(std::string("stdin: ") + e.what());
+  }
+
+  Points out;
+  if (o.spacing == "arclength") {
+    out = evaluate_at(c, evenly_spaced_parameters(c, static_cast<std::size_t>(count)), derivative);
+  } else if (o.spacing == "polygon") {
+    if (static_cast<long double>(c.segments()) * grain > max_points) throw Failure("--grain: too many points");
+    out = evaluate_at(c, polygon_evenly_spaced_parameters(c, grain, static_cast<std::size_t>(count)), derivative);
+  } else {
+    if (static_cast<long double>(c.segments()) * grain + 1 > max_points)
+      throw Failure("--grain " + o.grain + ": " + std::to_string(c.segments()) + " pieces would give more than " +
+                    std::to_string(max_points) + " points");
+    out = sample(c, grain, derivative);
+  }
+  cli::write_stdout(cli::format_points(out));
+  return 0;
+}
+
+const splinefig::cli::Registration reg{
+    "eval", "Evaluate a spline through knots read on stdin (CSV), points on stdout", [](CLI::App& app) {
+      auto o = std::make_shared<Options>();
+      app.add_option("--basis", o->basis,
+                     "Basis spec NAME[:key=value,...]: catmull-rom, cardinal:a=A, bspline, "
+                     "tensioned-bspline:a=A, beta:b1=B1,b2=B2, uniform-bspline:degree=N")
+          ->required();
+      app.add_option("--grain", o->grain, "Points per piece (default 16)");
+      app.add_option("--ends", o->ends,
+                     "open (the memo's: n knots give (n-3)*grain+1 points), double (first and last knot "
+                     "doubled), closed (cyclic: n*grain+1 points, last = first)");
+      app.add_option("--derivative", o->derivative, "0: X(t), 1: dX/dt, 2: d2X/dt2 (default 0)");
+      app.add_option("--spacing", o->spacing,
+                     "parameter (default: grain points per piece), arclength (--count points evenly "
+                     "spaced along the curve), polygon (the same by the memo's polyline method)");
+      app.add_option("--count", o->count, "Number of points for --spacing arclength|polygon (>= 2)");
+      app.footer(
+          "Knots: one per line, comma-separated coordinates (any dimension, the same on every line); "
+          "blank lines and lines starting with # are ignored. Output numbers read back to the same double.");
+      return splinefig::cli::Runner([o] { return run(*o); });
+    }};
+
+}  // namespace

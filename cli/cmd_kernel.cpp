@@ -1,0 +1,61 @@
+// `splinefig kernel`: the basis function k(x) of a basis as x,k(x) lines (CONTRACT.md).
+#include "command.hpp"
+#include "csv.hpp"
+
+#include <splinefig/spline/basis.hpp>
+
+#include <cmath>
+
+namespace {
+
+using namespace splinefig;
+using splinefig::cli::Failure;
+
+struct Options {
+  std::string basis, from = "-2", to = "2", step = "0.015625";
+};
+
+constexpr double max_rows = 1e8;
+
+int run(const Options& o) {
+  Basis b;
+  try {
+    b = parse_basis(o.basis);
+  } catch (const SpecError& e) {
+    throw Failure(std::string("--basis: ") + e.what());
+  }
+  const double x0 = cli::parse_number(o.from, "--from");
+  const double x1 = cli::parse_number(o.to, "--to");
+  const double step = cli::parse_number(o.step, "--step");
+  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
+  if (x1 < x0) throw Failure("--to " + o.to + " is less than --from " + o.from);
+  // x_i = x0 + i*step (not accumulated), up to x1 allowing for the rounding of (x1-x0)/step.
+  const double span = (x1 - x0) / step;
+  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
+  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
+  std::string text;
+  text.reserve(static_cast<size_t>(rows) * 24);
+  for (long long i = 0; i < rows; ++i) {
+    const double x = x0 + static_cast<double>(i) * step;
+    cli::append_number(text, x);
+    text += ',';
+    cli::append_number(text, kernel(b, x));
+    text += '\n';
+  }
+  cli::write_stdout(text);
+  return 0;
+}
+
+const splinefig::cli::Registration reg{
+    "kernel", "Write the basis function k(x) of a basis as x,k(x) lines", [](CLI::App& app) {
+      auto o = std::make_shared<Options>();
+      app.add_option("--basis", o->basis, "Basis spec NAME[:key=value,...] (see splinefig eval --help)")
+          ->required();
+      app.add_option("--from", o->from, "First x (default -2)");
+      app.add_option("--to", o->to, "Last x (default 2)");
+      app.add_option("--step", o->step, "Step in x (default 1/64)");
+      app.footer("k is the basis function of CONTRACT.md: a curve is X(t) = sum_j x[j] k(t - j).");
+      return splinefig::cli::Runner([o] { return run(*o); });
+    }};
+
+}  // namespace

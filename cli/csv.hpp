@@ -1,0 +1,46 @@
+#pragma once
+// CSV in and out for every subcommand (CONTRACT.md): one point per line, comma-separated
+// coordinates, any dimension >= 1 but the same on every line; blank lines and lines whose
+// first non-blank character is '#' are ignored. Numbers are written as the shortest decimal
+// that reads back to the same double (std::to_chars), so output round-trips exactly.
+//
+// Errors are splinefig::cli::Failure with one line naming the source, line and field, e.g.
+//   "stdin line 7, field 2: 'abc' is not a number".
+// Output is built in memory and written at once by write_stdout, so a failed command prints
+// nothing on stdout.
+#include "command.hpp"
+
+#include <splinefig/spline/points.hpp>
+
+#include <istream>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace splinefig::cli {
+
+// All points in `in`; `source` names it in errors ("stdin", a file name). Rejects text,
+// empty fields, NaN/inf, values out of double range, and lines of another dimension.
+// An input with no points gives an empty Points (dim 0); callers say what they need.
+Points read_points(std::istream& in, std::string_view source = "stdin");
+
+// One finite number from text (a flag value, a CSV field); `what` names it in the error,
+// e.g. "--from". Leading '+' and surrounding blanks are accepted.
+double parse_number(std::string_view text, std::string_view what);
+// A whole number in [lo, hi].
+long long parse_integer(std::string_view text, std::string_view what, long long lo, long long hi);
+// Comma-separated finite numbers ("-1.5,2"), as for vector-valued flags.
+std::vector<double> parse_vector(std::string_view text, std::string_view what);
+
+// Shortest round-trip decimal of v.
+void append_number(std::string& out, double v);
+std::string format_number(double v);
+// "x,y,z\n"
+void append_point(std::string& out, std::span<const double> p);
+std::string format_points(const Points& p);
+
+// Writes text to stdout and flushes; throws Failure if the write fails (disk full, closed pipe).
+void write_stdout(std::string_view text);
+
+}  // namespace splinefig::cli
