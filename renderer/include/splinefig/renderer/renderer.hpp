@@ -7,6 +7,7 @@
 // at the API; the image holds premultiplied linear RGBA float32, composited with
 // Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -53,6 +54,9 @@ struct PixelFilter {
   static PixelFilter box();
   static PixelFilter tent();  // the linear B-spline, support [-1, 1]
 };
+// Throws std::invalid_argument if `f` is not a usable filter (no pieces, non-finite values,
+// a zero integral, support wider than 8 px).
+void validate(const PixelFilter& f);
 
 enum class Marker { Circle, Square, Diamond, Cross, Plus };
 enum class HAlign { Left, Center, Right };
@@ -106,7 +110,7 @@ class Scene {
   int width_, height_;
   Color background_;
   PixelFilter filter_;
-  std::vector<Item>* items_;  // owned
+  std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
 };
 

@@ -1,0 +1,54 @@
+#pragma once
+// Paths as y-monotone chains, the input of the scan converter (sweep.hpp).
+//
+// A ChainBuilder takes closed contours (move_to, line_to, close) and cuts every contour into
+// maximal runs of edges that all go down (dir +1) or all go up (dir -1); horizontal edges are
+// dropped (they bound no area and cross no scanline). Each chain is stored with ascending y.
+// The winding number of a point is the sum of dir over the chains that cross the horizontal
+// ray to its left, so the chains carry everything the fill rules need.
+//
+// Clipping happens here, once: x is projected onto [clip.x0, clip.x1] (an edge leaving the box
+// sideways is split where it crosses the side and continues along the side: the area to the
+// right of it inside the box is unchanged), and y is cut to [clip.y0, clip.y1]. So coordinates
+// like 1e12 cost nothing later and all arithmetic downstream stays near the canvas.
+#include "geometry.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace splinefig::render::detail {
+
+struct Chain {
+  std::size_t first = 0, last = 0;  // vertex indices in Geometry::verts, inclusive, ascending y
+  int dir = 1;                       // +1: the contour runs down (increasing y); -1: up
+  double ymin = 0, ymax = 0, xmin = 0, xmax = 0;
+};
+
+struct Geometry {
+  std::vector<Vec2> verts;
+  std::vector<Chain> chains;
+};
+
+class ChainBuilder {
+ public:
+  ChainBuilder(Geometry& g, Box clip) : g_(g), clip_(clip) {}
+  void move_to(Vec2 p);
+  void line_to(Vec2 p);
+  void close();
+  const Box& clip() const { return clip_; }
+
+ private:
+  void clip_y(Vec2 a, Vec2 b);
+  void edge(Vec2 a, Vec2 b);
+  void end_chain();
+
+  Geometry& g_;
+  Box clip_;
+  Vec2 start_{}, cur_{};
+  bool open_contour_ = false;
+  bool in_chain_ = false;
+  std::size_t chain_first_ = 0;
+  int chain_dir_ = 0;
+};
+
+}  // namespace splinefig::render::detail

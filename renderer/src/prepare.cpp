@@ -1,0 +1,144 @@
+#include "prepare.hpp"
+
+#include "stroke.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace splinefig::render::detail {
+namespace {
+
+void disk_contour(Vec2 c, double r, ChainBuilder& out) {
+  out.move_to(Vec2{c.x + r, c.y});
+  arc_interior(c, r, 0.0, 2 * kPi, out.clip(), [&](Vec2 q) { out.line_to(q); });
+  out.close();
+}
+
+void polygon(std::initializer_list<Vec2> pts, Vec2 c, double s, ChainBuilder& out) {
+  bool first = true;
+  for (Vec2 p : pts) {
+    Vec2 q{c.x + s * p.x, c.y + s * p.y};
+    if (first) out.move_to(q); else out.line_to(q);
+    first = false;
+  }
+  out.close();
+}
+
+// Markers of overall size s (diameter, side, or arm span); plus and cross arms are s/4 thick.
+void marker_contour(Marker m, Vec2 c, double s, ChainBuilder& out) {
+  const double a = 0.5, t = 0.125;
+  switch (m) {
+    case Marker::Circle: disk_contour(c, 0.5 * s, out); break;
+    case Marker::Square: polygon({{-a, -a}, {a, -a}, {a, a}, {-a, a}}, c, s, out); break;
+    case Marker::Diamond: polygon({{0, -a}, {a, 0}, {0, a}, {-a, 0}}, c, s, out); break;
+    case Marker::Plus:
+      polygon({{-t, -a}, {t, -a}, {t, -t}, {a, -t}, {a, t}, {t, t}, {t, a}, {-t, a}, {-t, t}, {-a, t}, {-a, -t}, {-t, -t}},
+              c, s, out);
+      break;
+    case Marker::Cross: {
+      // The plus turned by 45 degrees, arms reaching the corners of the s x s square.
+      const double k = std::sqrt(0.5), A = a * std::sqrt(2.0);
+      auto rot = [&](double x, double y) { return Vec2{k * (x - y), k * (x + y)}; };
+      polygon({rot(-t, -A), rot(t, -A), rot(t, -t), rot(A, -t), rot(A, t), rot(t, t), rot(t, A), rot(-t, A),
+               rot(-t, t), rot(-A, t), rot(-A, -t), rot(-t, -t)},
+              c, s, out);
+      break;
+    }
+  }
+}
+
+// Whether a stroke is certainly one simple convex-ish contour (|winding| <= 1).
+bool single_segment(const std::vector<Vec2>& p, bool closed) {
+  if (closed) return false;
+  std::size_t distinct = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (i == 0 || !(p[i].x == p[i - 1].x && p[i].y == p[i - 1].y)) ++distinct;
+  return distinct <= 2;
+}
+
+}  // namespace
+
+void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& g, Prepared& out, int canvas_w,
+                  int canvas_h) {
+  using K = Scene::Item::Kind;
+  const float a = it.color.a;
+  out.color[0] = it.color.r * a;
+  out.color[1] = it.color.g * a;
+  out.color[2] = it.color.b * a;
+  out.color[3] = a;
+  if (it.kind == K::Text) {
+    out.is_text = true;
+    out.mask = text_mask(it.text, it.centre, it.text_style, canvas_w, canvas_h);
+    out.row0 = out.mask.y;
+    out.row1 = out.mask.y + out.mask.height;
+    return;
+  }
+  Shape& s = out.shape;
+  s.chain_begin = g.chains.size();
+  ChainBuilder b(g, clip);
+  auto sh = [&](Vec2 p) { return Vec2{p.x - shift.x, p.y - shift.y}; };
+  switch (it.kind) {
+    case K::Stroke: {
+      std::vector<Vec2> pts(it.contours[0]);
+      for (Vec2& p : pts) p = sh(p);
+      stroke_path(pts, it.closed, it.stroke, b);
+      s.simple = it.stroke.dashes.empty() && single_segment(pts, it.closed);
+      break;
+    }
+    case K::Fill:
+      for (const auto& c : it.contours) {
+        if (c.empty()) continue;
+        b.move_to(sh(c[0]));
+        for (std::size_t i = 1; i < c.size(); ++i) b.line_to(sh(c[i]));
+        b.close();
+      }
+      s.rule = it.rule;
+      break;
+    case K::Disk:
+      if (it.radius > 0) disk_contour(sh(it.centre), it.radius, b);
+      s.simple = true;
+      break;
+    case K::Ring: {
+      if (it.radius == 0) break;
+      // A closed polygon on the circle, fine enough that its chords stay within the arc
+      // tolerance of the circle; then stroked like any closed path.
+      std::vector<Vec2> pts;
+      Vec2 c = sh(it.centre);
+      pts.push_back(Vec2{c.x + it.radius, c.y});
+      arc_interior(c, it.radius, 0.0, 2 * kPi, clip, [&](Vec2 q) { pts.push_back(q); });
+      stroke_path(pts, true, it.stroke, b);
+      break;
+    }
+    case K::Marker:
+      if (it.radius > 0) marker_contour(it.marker, sh(it.centre), it.radius, b);
+      s.simple = true;
+      break;
+    case K::Text: break;
+  }
+  s.chain_end = g.chains.size();
+  auto first = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_begin);
+  auto last = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_end);
+  std::stable_sort(first, last, [](const Chain& x, const Chain& y) { return x.ymin < y.ymin; });
+  if (s.empty()) {
+    out.row0 = out.row1 = 0;
+    return;
+  }
+  s.xmin = s.ymin = INFINITY;
+  s.xmax = s.ymax = -INFINITY;
+  for (auto c = first; c != last; ++c) {
+    s.xmin = std::min(s.xmin, c->xmin);
+    s.xmax = std::max(s.xmax, c->xmax);
+    s.ymin = std::min(s.ymin, c->ymin);
+    s.ymax = std::max(s.ymax, c->ymax);
+  }
+  if (s.simple) {
+    // Sum of dir * integral of x dy: negative when the left boundaries run down (winding +1).
+    double sum = 0;
+    for (auto c = first; c != last; ++c)
+      for (std::size_t k = c->first; k < c->last; ++k)
+        sum += c->dir * 0.5 * (g.verts[k].x + g.verts[k + 1].x) * (g.verts[k + 1].y - g.verts[k].y);
+    s.orient = sum < 0 ? 1 : -1;
+  }
+}
+
+}  // namespace splinefig::render::detail

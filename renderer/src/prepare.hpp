@@ -1,0 +1,24 @@
+#pragma once
+// From a Scene's items to what the rasterizer consumes: each item's exact geometry as
+// y-monotone chains (clipped to the region that can affect the canvas) or a text mask.
+#include "scene_item.hpp"
+#include "sweep.hpp"
+#include "text.hpp"
+
+namespace splinefig::render::detail {
+
+struct Prepared {
+  Shape shape;         // empty for text
+  TextMask mask;       // text only
+  bool is_text = false;
+  float color[4]{};    // premultiplied linear RGBA
+  int row0 = 0, row1 = 0;  // canvas rows the item can touch, [row0, row1)
+};
+
+// `clip` is the region whose geometry matters (the canvas grown by the filter's support), in
+// the coordinates the rasterizer works in (already shifted to the filter's cell grid).
+// `shift` is subtracted from every input point.
+void prepare_item(const Scene::Item& item, Vec2 shift, const Box& clip, Geometry& g, Prepared& out,
+                  int canvas_w, int canvas_h);
+
+}  // namespace splinefig::render::detail

@@ -1,0 +1,132 @@
+// rasterize(): items become exact geometry (prepare.hpp), then the canvas is processed in
+// horizontal bands of rows, each band by one thread, every item composited in order with
+// Porter-Duff over. A band's pixels depend only on the geometry and its own rows, never on
+// which thread ran it or on the other bands, so any thread count gives identical bytes.
+#include "box_coverage.hpp"
+#include "filter_coverage.hpp"
+#include "prepare.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace splinefig::render {
+namespace detail {
+namespace {
+
+constexpr int kBandRows = 16;
+
+inline void over(float* px, const float* col, float c) {
+  const float k = 1.0f - col[3] * c;
+  px[0] = col[0] * c + px[0] * k;
+  px[1] = col[1] * c + px[1] * k;
+  px[2] = col[2] * c + px[2] * k;
+  px[3] = col[3] * c + px[3] * k;
+}
+
+void composite_mask(const Prepared& p, Image& img, int r0, int r1) {
+  const TextMask& m = p.mask;
+  for (int y = std::max(r0, m.y); y < std::min(r1, m.y + m.height); ++y) {
+    const float* cov = &m.coverage[static_cast<std::size_t>(y - m.y) * m.width];
+    for (int x = 0; x < m.width; ++x)
+      if (cov[x] > 0) over(img.pixel(m.x + x, y), p.color, cov[x]);
+  }
+}
+
+void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1, BoxRow& row) {
+  StripSweep sweep(g, p.shape);
+  const int y_begin = std::max(r0, p.row0), y_end = std::min(r1, p.row1);
+  for (int y = y_begin; y < y_end; ++y) {
+    row.begin(y);
+    if (!sweep.strip(static_cast<double>(y), static_cast<double>(y + 1), row)) break;
+    if (row.cmax < row.cmin) continue;
+    double cov = 0;
+    const int xe = std::min(row.cmax + 1, img.width - 1);
+    for (int x = row.cmin; x <= xe; ++x) {
+      cov += row.acc[static_cast<std::size_t>(x)];
+      row.acc[static_cast<std::size_t>(x)] = 0;
+      double c = cov;
+      if (c > 1e-9) over(img.pixel(x, y), p.color, static_cast<float>(std::min(c, 1.0)));
+    }
+    for (int x = xe + 1; x <= std::min(row.cmax + 1, img.width + 1); ++x) row.acc[static_cast<std::size_t>(x)] = 0;
+  }
+}
+
+}  // namespace
+}  // namespace detail
+
+Image rasterize(const Scene& scene, int threads) {
+  using namespace detail;
+  const int W = scene.width(), H = scene.height();
+  Image img;
+  img.width = W;
+  img.height = H;
+  img.rgba.resize(static_cast<std::size_t>(W) * H * 4);
+  const Color bg = scene.background_;
+  for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+    img.rgba[i] = bg.r * bg.a;
+    img.rgba[i + 1] = bg.g * bg.a;
+    img.rgba[i + 2] = bg.b * bg.a;
+    img.rgba[i + 3] = bg.a;
+  }
+
+  const bool box = scene.filter_.kind == PixelFilter::Kind::Box;
+  FilterGrid grid = box ? FilterGrid{} : make_filter_grid(scene.filter_, W, H);
+  Box clip = box ? Box{0, 0, static_cast<double>(W), static_cast<double>(H)} : grid.clip;
+  Vec2 shift = box ? Vec2{0, 0} : Vec2{grid.delta, grid.delta};
+
+  Geometry geom;
+  const auto& items = scene.items();
+  std::vector<Prepared> prep(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    prepare_item(items[i], shift, clip, geom, prep[i], W, H);
+    Prepared& p = prep[i];
+    if (p.is_text || p.shape.empty()) continue;
+    if (box) {
+      p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
+      p.row1 = std::min(H, static_cast<int>(std::ceil(p.shape.ymax)));
+    } else {
+      grid.rows_of(p.shape, p.row0, p.row1);
+    }
+  }
+
+  const int bands = (H + kBandRows - 1) / kBandRows;
+  // Which items touch which band, in item order.
+  std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
+  for (std::uint32_t i = 0; i < prep.size(); ++i) {
+    if (prep[i].row1 <= prep[i].row0) continue;
+    for (int b = prep[i].row0 / kBandRows; b <= (prep[i].row1 - 1) / kBandRows; ++b)
+      band_items[static_cast<std::size_t>(b)].push_back(i);
+  }
+
+  int nthreads = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  nthreads = std::min(nthreads, bands);
+  std::atomic<int> next{0};
+  auto worker = [&]() {
+    BoxRow row;
+    row.reset(W);
+    FilterScratch fs;
+    for (;;) {
+      const int b = next.fetch_add(1);
+      if (b >= bands) return;
+      const int r0 = b * kBandRows, r1 = std::min(H, r0 + kBandRows);
+      for (std::uint32_t i : band_items[static_cast<std::size_t>(b)]) {
+        const Prepared& p = prep[i];
+        if (p.is_text) composite_mask(p, img, r0, r1);
+        else if (box) render_box(geom, p, img, r0, r1, row);
+        else render_filtered(geom, p, grid, img, r0, r1, fs);
+      }
+    }
+  };
+  if (nthreads <= 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+  }
+  return img;
+}
+
+}  // namespace splinefig::render

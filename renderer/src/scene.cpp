@@ -1,0 +1,173 @@
+// Scene: validation of every drawing call, then recording it. Bad input is rejected here with
+// std::invalid_argument naming the argument, so rasterization never sees NaN or infinities.
+#include "scene_item.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace splinefig::render {
+namespace {
+
+[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
+
+void check_finite(double v, const char* call, const char* name) {
+  if (!std::isfinite(v)) bad(std::string(call) + ": " + name + " is not finite (" + std::to_string(v) + ")");
+}
+
+void check_points(std::span<const Vec2> pts, const char* call, const char* name) {
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (!std::isfinite(pts[i].x) || !std::isfinite(pts[i].y))
+      bad(std::string(call) + ": " + name + " point " + std::to_string(i) + " is not finite (" +
+          std::to_string(pts[i].x) + ", " + std::to_string(pts[i].y) + ")");
+}
+
+void check_color(const Color& c, const char* call) {
+  for (float v : {c.r, c.g, c.b, c.a})
+    if (!std::isfinite(v)) bad(std::string(call) + ": colour component is not finite");
+  if (c.a < 0 || c.a > 1) bad(std::string(call) + ": colour alpha " + std::to_string(c.a) + " is outside [0, 1]");
+}
+
+void check_style(const StrokeStyle& s, const char* call) {
+  check_finite(s.width, call, "stroke width");
+  if (s.width < 0) bad(std::string(call) + ": stroke width " + std::to_string(s.width) + " is negative");
+  check_finite(s.miter_limit, call, "miter limit");
+  if (s.miter_limit < 1) bad(std::string(call) + ": miter limit " + std::to_string(s.miter_limit) + " is below 1");
+  check_finite(s.dash_offset, call, "dash offset");
+  double period = 0;
+  for (double d : s.dashes) {
+    check_finite(d, call, "dash length");
+    if (d < 0) bad(std::string(call) + ": dash length " + std::to_string(d) + " is negative");
+    period += d;
+  }
+  if (!s.dashes.empty() && period > 0 && period < 1e-3)
+    bad(std::string(call) + ": dash pattern period " + std::to_string(period) + " px is below 0.001 px");
+}
+
+}  // namespace
+
+void validate(const PixelFilter& f) {
+  if (f.kind == PixelFilter::Kind::Box) return;
+  if (f.pieces.empty()) bad("pixel filter '" + f.name + "': no pieces");
+  if (!std::isfinite(f.lo)) bad("pixel filter '" + f.name + "': lo is not finite");
+  if (f.pieces.size() > 8) bad("pixel filter '" + f.name + "': support wider than 8 px");
+  double integral = 0;
+  for (const auto& p : f.pieces) {
+    if (p.empty() || p.size() > 8) bad("pixel filter '" + f.name + "': a piece needs 1 to 8 coefficients");
+    for (std::size_t e = 0; e < p.size(); ++e) {
+      if (!std::isfinite(p[e])) bad("pixel filter '" + f.name + "': coefficient is not finite");
+      integral += p[e] / static_cast<double>(e + 1);
+    }
+  }
+  if (!(std::abs(integral) > 1e-12)) bad("pixel filter '" + f.name + "': its integral is zero");
+}
+
+PixelFilter PixelFilter::box() { return PixelFilter{}; }
+
+PixelFilter PixelFilter::tent() {
+  PixelFilter f;
+  f.kind = Kind::Piecewise;
+  f.lo = -1;
+  f.pieces = {{0.0, 1.0}, {1.0, -1.0}};
+  f.name = "tent";
+  return f;
+}
+
+Scene::Scene(int width, int height, Color background, PixelFilter filter)
+    : width_(width), height_(height), background_(background), filter_(std::move(filter)),
+      items_(std::make_unique<std::vector<Item>>()) {
+  if (width < 1 || height < 1) bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is empty");
+  if (width > 32768 || height > 32768) bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds 32768 px a side");
+  if (static_cast<long long>(width) * height > (1LL << 28))
+    bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds 2^28 pixels");
+  check_color(background, "Scene");
+  validate(filter_);
+}
+
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+Scene::~Scene() = default;
+
+const std::vector<Scene::Item>& Scene::items() const { return *items_; }
+
+void Scene::stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color) {
+  check_points(points, "stroke_polyline", "polyline");
+  check_style(style, "stroke_polyline");
+  check_color(color, "stroke_polyline");
+  Item it;
+  it.kind = Item::Kind::Stroke;
+  it.contours.emplace_back(points.begin(), points.end());
+  it.closed = closed;
+  it.stroke = style;
+  it.color = color;
+  items_->push_back(std::move(it));
+}
+
+void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) {
+  for (const auto& c : contours) check_points(c, "fill_polygon", "contour");
+  check_color(color, "fill_polygon");
+  Item it;
+  it.kind = Item::Kind::Fill;
+  it.contours = contours;
+  it.rule = rule;
+  it.color = color;
+  items_->push_back(std::move(it));
+}
+
+void Scene::fill_circle(Vec2 centre, double radius, Color color) {
+  check_points({&centre, 1}, "fill_circle", "centre");
+  check_finite(radius, "fill_circle", "radius");
+  if (radius < 0) bad("fill_circle: radius " + std::to_string(radius) + " is negative");
+  check_color(color, "fill_circle");
+  Item it;
+  it.kind = Item::Kind::Disk;
+  it.centre = centre;
+  it.radius = radius;
+  it.color = color;
+  items_->push_back(std::move(it));
+}
+
+void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) {
+  check_points({&centre, 1}, "stroke_circle", "centre");
+  check_finite(radius, "stroke_circle", "radius");
+  if (radius < 0) bad("stroke_circle: radius " + std::to_string(radius) + " is negative");
+  check_style(style, "stroke_circle");
+  check_color(color, "stroke_circle");
+  Item it;
+  it.kind = Item::Kind::Ring;
+  it.centre = centre;
+  it.radius = radius;
+  it.stroke = style;
+  it.color = color;
+  items_->push_back(std::move(it));
+}
+
+void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
+  check_points({&centre, 1}, "marker", "centre");
+  check_finite(size, "marker", "size");
+  if (size < 0) bad("marker: size " + std::to_string(size) + " is negative");
+  check_color(fill, "marker");
+  Item it;
+  it.kind = Item::Kind::Marker;
+  it.marker = shape;
+  it.centre = centre;
+  it.radius = size;
+  it.color = fill;
+  items_->push_back(std::move(it));
+}
+
+void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
+  check_points({&anchor, 1}, "text", "anchor");
+  check_finite(style.size, "text", "font size");
+  if (style.size <= 0 || style.size > 4096) bad("text: font size " + std::to_string(style.size) + " is outside (0, 4096]");
+  check_color(style.color, "text");
+  Item it;
+  it.kind = Item::Kind::Text;
+  it.text = std::string(text);
+  it.centre = anchor;
+  it.text_style = style;
+  it.color = style.color;
+  items_->push_back(std::move(it));
+}
+
+}  // namespace splinefig::render

@@ -1,0 +1,24 @@
+#pragma once
+// What a Scene records for each drawing call: the call's own arguments, validated. Geometry is
+// built at rasterization time, when the clip region (canvas plus filter support) is known.
+#include <splinefig/renderer/renderer.hpp>
+
+#include <vector>
+
+namespace splinefig::render {
+
+struct Scene::Item {
+  enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text } kind = Kind::Fill;
+  std::vector<std::vector<Vec2>> contours;  // Fill: the contours; Stroke: contours[0] the path
+  bool closed = false;
+  StrokeStyle stroke;
+  FillRule rule = FillRule::NonZero;
+  Color color;
+  Vec2 centre;
+  double radius = 0;  // Disk, Ring: radius; Marker: size
+  render::Marker marker = render::Marker::Circle;
+  std::string text;
+  TextStyle text_style;
+};
+
+}  // namespace splinefig::render

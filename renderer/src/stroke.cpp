@@ -1,0 +1,295 @@
+#include "stroke.hpp"
+
+#include <vector>
+
+namespace splinefig::render::detail {
+namespace {
+
+struct Segment {
+  Vec2 d, n;  // unit direction, left normal (d turned +90 degrees)
+  double len;
+};
+
+class Outliner {
+ public:
+  Outliner(const StrokeStyle& s, ChainBuilder& out) : style_(s), h_(0.5 * s.width), out_(out) {}
+
+  void open(std::span<const Vec2> p, const std::vector<Segment>& seg);
+  void closed(std::span<const Vec2> p, const std::vector<Segment>& seg);
+  void single_point(Vec2 p, Vec2 d);
+
+ private:
+  // Forward vertices of the side `s` (+1 left, -1 right) at the vertex P between segments a, b.
+  void join(Vec2 P, const Segment& a, const Segment& b, double s, std::vector<Vec2>& v) const;
+  void emit(const std::vector<Vec2>& v, bool reverse, bool first);
+  void cap(Vec2 P, Vec2 d, Vec2 n);  // from P + h n to P - h n, bulging towards d
+
+  const StrokeStyle& style_;
+  double h_;
+  ChainBuilder& out_;
+  std::vector<Vec2> buf_;
+};
+
+void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::vector<Vec2>& v) const {
+  const double h = h_;
+  const double c = cross(a.d, b.d), dt = dot(a.d, b.d);
+  const Vec2 A = P + (s * h) * a.n, B = P + (s * h) * b.n;
+  if (c == 0 && dt > 0) {  // straight on
+    v.push_back(A);
+    return;
+  }
+  const bool outer_left = c < 0 || (c == 0 && dt < 0);
+  const bool outer = s > 0 ? outer_left : !outer_left;
+  if (!outer) {
+    // Inner side: the offset lines' intersection X if it lies within both segments.
+    if (h * std::abs(c) <= (1 + dt) * std::min(a.len, b.len) && 1 + dt > 1e-12) {
+      v.push_back(P + (s * h / (1 + dt)) * (a.n + b.n));
+    } else {
+      v.push_back(A);
+      v.push_back(P);
+      v.push_back(B);
+    }
+    return;
+  }
+  const double theta = c == 0 ? -kPi : std::atan2(c, dt);  // signed turn from a to b
+  v.push_back(A);
+  switch (style_.join) {
+    case Join::Round: {
+      const double a0 = std::atan2(s * a.n.y, s * a.n.x);
+      arc_interior(P, h, a0, theta, out_.clip(), [&](Vec2 q) { v.push_back(q); });
+      break;
+    }
+    case Join::Miter: {
+      const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1 + dt)));
+      if (cos_half > 0 && 1.0 / cos_half <= style_.miter_limit) v.push_back(P + (s * h / (1 + dt)) * (a.n + b.n));
+      break;
+    }
+    case Join::Bevel: break;
+  }
+  v.push_back(B);
+}
+
+void Outliner::emit(const std::vector<Vec2>& v, bool reverse, bool first) {
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    Vec2 q = reverse ? v[v.size() - 1 - k] : v[k];
+    if (first && k == 0) out_.move_to(q); else out_.line_to(q);
+  }
+}
+
+void Outliner::cap(Vec2 P, Vec2 d, Vec2 n) {
+  const double h = h_;
+  switch (style_.cap) {
+    case Cap::Butt: break;
+    case Cap::Square:
+      out_.line_to(P + h * n + h * d);
+      out_.line_to(P - h * n + h * d);
+      break;
+    case Cap::Round:
+      arc_interior(P, h, std::atan2(n.y, n.x), -kPi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
+      break;
+  }
+  out_.line_to(P - h * n);
+}
+
+void Outliner::open(std::span<const Vec2> p, const std::vector<Segment>& seg) {
+  const std::size_t m = seg.size();
+  const double h = h_;
+  out_.move_to(p[0] + h * seg[0].n);
+  for (std::size_t j = 1; j < m; ++j) {
+    buf_.clear();
+    join(p[j], seg[j - 1], seg[j], 1, buf_);
+    emit(buf_, false, false);
+  }
+  out_.line_to(p[m] + h * seg[m - 1].n);
+  cap(p[m], seg[m - 1].d, seg[m - 1].n);
+  for (std::size_t j = m - 1; j >= 1; --j) {
+    buf_.clear();
+    join(p[j], seg[j - 1], seg[j], -1, buf_);
+    emit(buf_, true, false);
+  }
+  Vec2 mn{-seg[0].n.x, -seg[0].n.y}, md{-seg[0].d.x, -seg[0].d.y};
+  out_.line_to(p[0] + h * mn);
+  cap(p[0], md, mn);
+  out_.close();
+}
+
+void Outliner::closed(std::span<const Vec2> p, const std::vector<Segment>& seg) {
+  const std::size_t m = seg.size();  // == p.size(): segment j runs from p[j] to p[(j+1) % m]
+  for (int side : {1, -1}) {
+    bool first = true;
+    for (std::size_t k = 0; k < m; ++k) {
+      std::size_t j = side > 0 ? k : m - 1 - k;
+      buf_.clear();
+      join(p[j], seg[(j + m - 1) % m], seg[j], side, buf_);
+      emit(buf_, side < 0, first);
+      first = false;
+    }
+    out_.close();
+  }
+}
+
+void Outliner::single_point(Vec2 P, Vec2 d) {
+  const double h = h_;
+  const Vec2 n{-d.y, d.x};
+  switch (style_.cap) {
+    case Cap::Butt: return;
+    case Cap::Square:
+      out_.move_to(P + h * n - h * d);
+      out_.line_to(P + h * n + h * d);
+      out_.line_to(P - h * n + h * d);
+      out_.line_to(P - h * n - h * d);
+      out_.close();
+      return;
+    case Cap::Round: {
+      const double a0 = std::atan2(n.y, n.x);
+      out_.move_to(P + h * n);
+      arc_interior(P, h, a0, -kPi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
+      out_.line_to(P - h * n);
+      arc_interior(P, h, a0 + kPi, -kPi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
+      out_.close();
+      return;
+    }
+  }
+}
+
+// Drops repeated points; returns the segments between the remaining ones.
+std::vector<Segment> segments(std::vector<Vec2>& p, bool closed) {
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (k == 0 || !(p[i] == p[k - 1])) p[k++] = p[i];
+  p.resize(k);
+  if (closed) while (p.size() > 1 && p.back() == p.front()) p.pop_back();
+  std::vector<Segment> seg;
+  if (p.size() < 2) return seg;
+  const std::size_t m = closed ? p.size() : p.size() - 1;
+  seg.reserve(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    Vec2 e = p[(i + 1) % p.size()] - p[i];
+    double len = length(e);
+    Vec2 d = (1.0 / len) * e;
+    seg.push_back({d, Vec2{-d.y, d.x}, len});
+  }
+  return seg;
+}
+
+}  // namespace
+
+void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {
+  if (!(style.width > 0) || pts.empty()) return;
+  std::vector<Vec2> p(pts.begin(), pts.end());
+  std::vector<Segment> seg = segments(p, closed);
+  Outliner o(style, out);
+  if (seg.empty()) {
+    // A path of one point: SVG draws its caps as if it ran along +x.
+    o.single_point(p[0], Vec2{1, 0});
+    return;
+  }
+  if (closed && p.size() >= 2) o.closed(p, seg); else o.open(p, seg);
+}
+
+void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {
+  if (!(style.width > 0) || pts.empty()) return;
+  std::vector<double> dash = style.dashes;
+  double period = 0;
+  for (double d : dash) period += d;
+  if (dash.empty() || !(period > 0)) {
+    stroke_outline(pts, closed, style, out);
+    return;
+  }
+  if (dash.size() % 2) {
+    dash.insert(dash.end(), dash.begin(), dash.end());
+    period *= 2;
+  }
+  std::vector<Vec2> p(pts.begin(), pts.end());
+  if (closed && !p.empty()) p.push_back(p.front());
+
+  // Geometry farther than `reach` from the canvas cannot touch it: dash runs are clipped there.
+  const double h = 0.5 * style.width;
+  const double reach = h * std::max(style.miter_limit, 1.5) + 2.0;
+  Box near = out.clip();
+  near.x0 -= reach; near.y0 -= reach; near.x1 += reach; near.y1 += reach;
+
+  // Dash state: index into the pattern, distance left in that entry.
+  double ph = std::fmod(style.dash_offset, period);
+  if (ph < 0) ph += period;
+  std::size_t idx = 0;
+  while (ph >= dash[idx]) { ph -= dash[idx]; idx = (idx + 1) % dash.size(); }
+  double left = dash[idx] - ph;
+  auto advance_far = [&](double dist) {  // skip `dist` along the pattern
+    double r = std::fmod(dist, period);
+    // only the remainder matters; walk at most one period
+    while (r > 0) {
+      if (r < left) { left -= r; r = 0; break; }
+      r -= left;
+      idx = (idx + 1) % dash.size();
+      left = dash[idx];
+    }
+  };
+
+  StrokeStyle solid = style;
+  solid.dashes.clear();
+  std::vector<Vec2> run;
+  Vec2 run_dir{1, 0};
+  auto flush = [&]() {
+    if (run.empty()) return;
+    if (run.size() == 1 || (run.size() == 2 && run[0] == run[1])) {
+      Outliner o(solid, out);
+      o.single_point(run[0], run_dir);
+    } else {
+      stroke_outline(run, false, solid, out);
+    }
+    run.clear();
+  };
+  for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+    Vec2 a = p[i], b = p[i + 1];
+    Vec2 e = b - a;
+    double len = length(e);
+    if (len == 0) continue;
+    Vec2 d = (1.0 / len) * e;
+    // Liang-Barsky: the part [t0, t1] (in length units) of the segment inside `near`.
+    double t0 = 0, t1 = len;
+    auto clip1 = [&](double pdir, double q) {  // pdir * t <= q
+      if (pdir == 0) { if (q < 0) { t0 = 1; t1 = 0; } return; }
+      double t = q / pdir;
+      if (pdir < 0) t0 = std::max(t0, t); else t1 = std::min(t1, t);
+    };
+    clip1(-d.x, a.x - near.x0); clip1(d.x, near.x1 - a.x);
+    clip1(-d.y, a.y - near.y0); clip1(d.y, near.y1 - a.y);
+    if (t0 >= t1) {  // the whole segment is far away
+      flush();
+      advance_far(len);
+      continue;
+    }
+    double t = 0;
+    if (t0 > 0) { flush(); advance_far(t0); t = t0; }
+    const bool on_at_start = idx % 2 == 0;
+    if (on_at_start && run.empty()) run.push_back(a + t * d);
+    if (on_at_start && !run.empty() && !(run.back() == (a + t * d))) run.push_back(a + t * d);
+    while (t < t1) {
+      double step = std::min(left, t1 - t);
+      t += step;
+      left -= step;
+      if (left <= 0) {
+        Vec2 q = t >= len ? b : a + t * d;
+        if (idx % 2 == 0) {  // a dash ends here
+          run.push_back(q);
+          run_dir = d;
+          flush();
+        } else {  // a dash starts here
+          run.push_back(q);
+          run_dir = d;
+        }
+        idx = (idx + 1) % dash.size();
+        left = dash[idx];
+      }
+    }
+    if (idx % 2 == 0 && !run.empty()) {
+      run.push_back(t1 >= len ? b : a + t1 * d);
+      run_dir = d;
+    }
+    if (t1 < len) { flush(); advance_far(len - t1); }
+  }
+  flush();
+}
+
+}  // namespace splinefig::render::detail

@@ -1,0 +1,33 @@
+#pragma once
+// A stroke as the outline whose nonzero region is exactly the union of the stroke's pieces.
+//
+// The pieces (CONTRACT.md, as SVG 2 defines them): one rectangle of the stroke width per
+// segment; at each interior vertex a join piece on the outer side of the turn (round: the
+// circular sector between the two outer corners; miter: the quadrilateral up to the miter tip,
+// a bevel instead when miter length / width exceeds the limit; bevel: the triangle); caps at
+// the two ends of an open path (butt: none; square: a half-square; round: a half-disk).
+//
+// Why the outline is exact: orient every piece the same way. The sum of their boundaries, as a
+// chain, has winding number = the number of pieces covering a point, so the union is
+// {winding > 0}. In that sum the radii shared by a rectangle's end and its join piece cancel,
+// leaving the familiar outline: offset lines, outer join geometry, and on the inner side the
+// two half-ends meeting at the vertex ("pivot"). Where the inner offset lines meet at a point X
+// lying within both segments, replacing the pivot by X removes a quadrilateral lying in both
+// rectangles: the winding drops by one there but stays >= 1, since a point in k such
+// quadrilaterals lies in at least k+1 rectangles. So {winding > 0} is still the union, while a
+// densely sampled smooth curve gives two clean offset curves instead of a comb of spikes.
+// The rasterizer then needs union semantics only where the path really overlaps itself.
+#include "chains.hpp"
+
+#include <span>
+
+namespace splinefig::render::detail {
+
+// Appends the closed contours of the stroke of `pts` (dashes included) to `out`. `reach` is
+// how far from the canvas geometry may be skipped (dash runs far outside are not generated).
+void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out);
+
+// The stroke of a path with no dashes.
+void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out);
+
+}  // namespace splinefig::render::detail
