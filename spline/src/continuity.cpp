@@ -61,9 +61,16 @@ std::vector<Joint> joints(const Curve& c) {
     for (int m = 0; m < 3; ++m) J.jump[m] = distance(J.left[m], J.right[m]);
     const double vl = norm(J.left[1]), vr = norm(J.right[1]);
     J.velocity_ratio = vr / vl;
-    J.tangent_angle = (vl > 0 && vr > 0)
-                          ? std::acos(std::clamp(dot(J.left[1], J.right[1]) / (vl * vr), -1.0, 1.0))
-                          : std::numeric_limits<double>::quiet_NaN();
+    // 2 atan2(|a - b|, |a + b|) for unit a, b: accurate for small angles, unlike acos.
+    J.tangent_angle = std::numeric_limits<double>::quiet_NaN();
+    if (vl > 0 && vr > 0) {
+      std::vector<double> diff(J.left[1].size()), sum(J.left[1].size());
+      for (size_t d = 0; d < diff.size(); ++d) {
+        diff[d] = J.right[1][d] / vr - J.left[1][d] / vl;
+        sum[d] = J.right[1][d] / vr + J.left[1][d] / vl;
+      }
+      J.tangent_angle = 2 * std::atan2(norm(diff), norm(sum));
+    }
     J.curvature_jump = distance(curvature_vector(J.left[1], J.left[2]), curvature_vector(J.right[1], J.right[2]));
     out.push_back(std::move(J));
   }
