@@ -26,8 +26,8 @@ std::vector<double> velocity(const std::string& text, const char* flag, int dim)
   if (text.empty()) return std::vector<double>(static_cast<std::size_t>(dim), 0.0);
   std::vector<double> v = parse_vector(text, flag);
   if (static_cast<int>(v.size()) != dim)
-    throw Failure(std::string(flag) + ": " + std::to_string(v.size()) + " components, but the data points have " +
-                  std::to_string(dim));
+    throw Failure(std::string(flag) + ": " + std::to_string(v.size()) + (v.size() == 1 ? " coordinate" : " coordinates") +
+                  " given, but the data points have " + std::to_string(dim));
   return v;
 }
 
