@@ -93,4 +93,12 @@ Points spaced_catmull_rom_curve(const Points& knots, double alpha, int grain, in
   return out;
 }
 
+Points sample_spaced(const Curve& c, double alpha, int grain, int derivative) {
+  const bool catmull_rom = c.basis.degree == 3 && c.basis.family == "cardinal" && c.basis(2, 0) == -0.5 &&
+                           c.basis(2, 2) == 0.5;
+  if (!catmull_rom)
+    throw std::invalid_argument("knot spacing applies to the Catmull-Rom basis only, not " + c.basis.spec);
+  return spaced_catmull_rom_curve(c.control, alpha, grain, derivative);
+}
+
 }  // namespace splinefig

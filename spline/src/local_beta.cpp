@@ -2,6 +2,7 @@
 // exactly by second-order forward mode (a value with its first two u-derivatives).
 #include <splinefig/spline/local_beta.hpp>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <stdexcept>
@@ -107,6 +108,40 @@ Points local_beta_curve(const Points& knots, std::span<const ShapeParameters> be
       local_beta_point(knots, betas, i, static_cast<double>(j) / static_cast<double>(g), derivative,
                        std::span<double>(out.coords.data() + row * dim, dim));
   local_beta_point(knots, betas, n - 3, 1.0, derivative, std::span<double>(out.coords.data() + row * dim, dim));
+  return out;
+}
+
+std::vector<ShapeParameters> extend_betas(std::span<const ShapeParameters> betas, Ends ends) {
+  const std::size_t n = betas.size();
+  std::vector<ShapeParameters> out;
+  if (n == 0) return out;
+  switch (ends) {
+    case Ends::open:
+      out.assign(betas.begin(), betas.end());
+      break;
+    case Ends::doubled:
+      out.push_back(betas.front());
+      out.insert(out.end(), betas.begin(), betas.end());
+      out.push_back(betas.back());
+      break;
+    case Ends::closed:
+      // As make_curve wraps a cubic's knots: the last in front, the first two behind.
+      for (std::size_t j = 0; j < n + 3; ++j) out.push_back(betas[(j + 2 * n - 1) % n]);
+      break;
+  }
+  return out;
+}
+
+Points sample_local_betas(const Curve& c, std::span<const ShapeParameters> betas, int grain, int derivative) {
+  if (c.degree() != 3) throw std::invalid_argument("local betas need a cubic curve, not " + c.basis.spec);
+  if (betas.size() != c.knot_count)
+    throw std::invalid_argument("local betas: " + std::to_string(betas.size()) + " (b1, b2) pairs for " +
+                                std::to_string(c.knot_count) + " knots (one per knot)");
+  const std::vector<ShapeParameters> all = extend_betas(betas, c.ends);
+  Points out = local_beta_curve(c.control, all, grain, derivative);
+  // A closed curve ends exactly where it starts (as sample() does for the uniform bases).
+  if (c.ends == Ends::closed && derivative == 0)
+    std::copy_n(out.coords.begin(), c.dim(), out.coords.end() - c.dim());
   return out;
 }
 

@@ -15,6 +15,7 @@
 // Coincident knots (zero distance) give a zero-length parameter interval when alpha > 0: a
 // difference quotient 0/0 is read as 0, so a doubled end knot gives a zero end velocity and a
 // doubled interior knot a piece that stays at the point (the memo's repeated knot).
+#include <splinefig/spline/curve.hpp>
 #include <splinefig/spline/points.hpp>
 
 #include <optional>
@@ -42,5 +43,10 @@ void spaced_catmull_rom(const Points& knots, const std::vector<double>& tau, std
 // u = 0, 1/grain, ..., (grain-1)/grain, and the final point: (n-3)*grain+1 points.
 // Doubled or cyclic ends are made by extending the knot list first, as for the uniform bases.
 Points spaced_catmull_rom_curve(const Points& knots, double alpha, int grain, int derivative = 0);
+
+// The same for a Catmull-Rom curve from make_curve (its end mode already applied to the
+// knots): as many points as sample(c, grain, derivative). Throws std::invalid_argument unless
+// c's basis is Catmull-Rom (cardinal a = 0.5).
+Points sample_spaced(const Curve& c, double alpha, int grain, int derivative = 0);
 
 }  // namespace splinefig

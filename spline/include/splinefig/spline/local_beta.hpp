@@ -17,6 +17,7 @@
 // along every piece; we require min(b2) + d_1(min(b1)) > 0 over each piece's two knots (d_1
 // increasing in b1), which Barsky's range b1 > 0, b2 >= 0 always meets, and which also admits
 // the moderate negative tension of the memo's example.
+#include <splinefig/spline/curve.hpp>
 #include <splinefig/spline/points.hpp>
 
 #include <span>
@@ -43,5 +44,15 @@ void local_beta_point(const Points& knots, std::span<const ShapeParameters> beta
 // The memo's open curve (n >= 4 knots): pieces 1..n-3 at u = j/grain, and the final point.
 Points local_beta_curve(const Points& knots, std::span<const ShapeParameters> betas, int grain,
                         int derivative = 0);
+
+// Per-knot values for the knots as given, extended the way make_curve extends the knots for an
+// end mode (doubled: first and last repeated; closed: wrapped), so they match c.control.
+std::vector<ShapeParameters> extend_betas(std::span<const ShapeParameters> betas, Ends ends);
+
+// A cubic curve from make_curve (only its knots and end mode are used; its basis is replaced by
+// the continuously shaped Beta-spline) with one (b1, b2) per knot as given (c.knot_count):
+// as many points as sample(c, grain, derivative). Throws std::invalid_argument on a count
+// mismatch, a non-cubic curve, or parameters for which the matrix does not exist.
+Points sample_local_betas(const Curve& c, std::span<const ShapeParameters> betas, int grain, int derivative = 0);
 
 }  // namespace splinefig
