@@ -5,6 +5,10 @@
 #include <splinefig/spline/arclength.hpp>
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/curve.hpp>
+#include <splinefig/spline/knot_spacing.hpp>
+#include <splinefig/spline/local_beta.hpp>
+
+#include <fstream>
 
 #include <iostream>
 
@@ -15,7 +19,26 @@ using splinefig::cli::Failure;
 
 struct Options {
   std::string basis, grain = "16", ends = "open", derivative = "0", spacing = "parameter", count;
+  std::string knot_spacing = "uniform", betas;  // docs/companion.md
 };
+
+// --knot-spacing and --betas (docs/companion.md): the curve's pieces from the spline library's
+// spaced Catmull-Rom or continuously shaped Beta-spline instead of the uniform matrix.
+Points sample_companion(const Options& o, const Curve& c, int grain, int derivative) {
+  try {
+    if (o.betas.empty())
+      return sample_spaced(c, spacing_exponent(*parse_knot_spacing(o.knot_spacing)), grain, derivative);
+    std::ifstream in(o.betas);
+    if (!in) throw Failure("--betas: cannot open '" + o.betas + "'");
+    const Points b = cli::read_points(in, o.betas);
+    if (b.dim != 2) throw Failure(o.betas + ": " + std::to_string(b.dim) + " values per line, expected b1,b2");
+    std::vector<ShapeParameters> betas;
+    for (std::size_t i = 0; i < b.size(); ++i) betas.push_back({b[i][0], b[i][1]});
+    return sample_local_betas(c, betas, grain, derivative);
+  } catch (const std::invalid_argument& e) {
+    throw Failure((o.betas.empty() ? std::string("--knot-spacing: ") : o.betas + ": ") + e.what());
+  }
+}
 
 // Output points above this many are refused rather than exhausting memory.
 constexpr long long max_points = 1LL << 28;
@@ -41,6 +64,12 @@ int run(const Options& o) {
   if (by_length && o.count.empty()) throw Failure("--spacing " + o.spacing + " needs --count N");
   if (!by_length && !o.count.empty()) throw Failure("--count needs --spacing arclength (or polygon)");
   const long long count = by_length ? cli::parse_integer(o.count, "--count", 2, max_points) : 0;
+  if (!parse_knot_spacing(o.knot_spacing))
+    throw Failure("--knot-spacing: unknown spacing '" + o.knot_spacing + "' (known: uniform, chordal, centripetal)");
+  const bool companion = o.knot_spacing != "uniform" || !o.betas.empty();
+  if (companion && by_length) throw Failure("--knot-spacing and --betas need --spacing parameter");
+  if (o.knot_spacing != "uniform" && !o.betas.empty()) throw Failure("--betas cannot be combined with --knot-spacing");
+  if (!o.betas.empty() && b.family != "beta") throw Failure("--betas needs --basis beta, not " + b.spec);
 
   const Points knots = cli::read_points(std::cin, "stdin");
   Curve c;
@@ -60,7 +89,7 @@ int run(const Options& o) {
     if (static_cast<long double>(c.segments()) * grain + 1 > max_points)
       throw Failure("--grain " + o.grain + ": " + std::to_string(c.segments()) + " pieces would give more than " +
                     std::to_string(max_points) + " points");
-    out = sample(c, grain, derivative);
+    out = companion ? sample_companion(o, c, grain, derivative) : sample(c, grain, derivative);
   }
   cli::write_stdout(cli::format_points(out));
   return 0;
@@ -82,6 +111,12 @@ const splinefig::cli::Registration reg{
                      "parameter (default: grain points per piece), arclength (--count points evenly "
                      "spaced along the curve), polygon (the same by the memo's polyline method)");
       app.add_option("--count", o->count, "Number of points for --spacing arclength|polygon (>= 2)");
+      app.add_option("--knot-spacing", o->knot_spacing,
+                     "catmull-rom only: uniform (default), chordal or centripetal knot parameters; "
+                     "--derivative is then d/dtau of the spaced parameter");
+      app.add_option("--betas", o->betas,
+                     "beta only: CSV file of b1,b2 per knot (bias, tension), blended along each piece "
+                     "(continuously shaped Beta-spline, G2)");
       app.footer(
           "Knots: one per line, comma-separated coordinates (any dimension, the same on every line); "
           "blank lines and lines starting with # are ignored. Output numbers read back to the same double.");
