@@ -1,0 +1,147 @@
+// `splinefig diff A B`: compares two images the way OpenImageIO's idiff does (same numbers,
+// report lines and exit codes: 0 match, 1 warning, 2 failure, 4 unreadable file), with the
+// options image tests need (linear light, alpha, mask, shift tolerance, SSIM, FLIP) and
+// pictures of the difference. See docs/compare.md.
+#include "command.hpp"
+
+#include <splinefig/compare/compare.hpp>
+#include <splinefig/compare/io.hpp>
+#include <splinefig/compare/visualize.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+namespace {
+
+using namespace splinefig;
+
+struct DiffArgs {
+  std::string a, b;
+  float fail = 1e-6f, failpercent = 0.0f, hardfail = std::numeric_limits<float>::infinity();
+  float warn = 1e-6f, warnpercent = 0.0f, hardwarn = std::numeric_limits<float>::infinity();
+  long long allowfailures = 0;
+  bool linear = false, ignore_alpha = false, json = false, verbose = false, quiet = false, perceptual = false;
+  int shift = 0;
+  std::optional<double> ssim, flip;
+  std::optional<float> scale;
+  std::string mask, diff_image, triptych;
+};
+
+void check_threshold(const char* flag, double v, bool allow_inf = false) {
+  if (std::isnan(v) || v < 0.0 || (!allow_inf && std::isinf(v)))
+    throw cli::Failure(std::string(flag) + " must be a " + (allow_inf ? "" : "finite ") +
+                       "number >= 0, got " + std::to_string(v));
+}
+
+void check_percent(const char* flag, double v) {
+  if (!(v >= 0.0 && v <= 100.0)) throw cli::Failure(std::string(flag) + " must be a percentage in [0, 100]");
+}
+
+compare::Image load(const std::string& path, bool linear) {
+  try {
+    compare::LoadOptions lo;
+    lo.linear = linear;
+    return compare::load_image(path, lo);
+  } catch (const compare::UnreadableImage& e) {
+    throw cli::Failure(std::string("cannot read ") + e.what(), 4);
+  }
+}
+
+void write(const std::string& path, const compare::Image& im) {
+  try {
+    compare::write_image(path, im);
+  } catch (const compare::UnwritableImage& e) {
+    throw cli::Failure(std::string("cannot write ") + e.what(), 4);
+  }
+}
+
+int run(const DiffArgs& args) {
+  check_threshold("--fail", args.fail);
+  check_threshold("--warn", args.warn);
+  check_threshold("--hardfail", args.hardfail, true);
+  check_threshold("--hardwarn", args.hardwarn, true);
+  check_percent("--failpercent", args.failpercent);
+  check_percent("--warnpercent", args.warnpercent);
+  if (args.allowfailures < 0) throw cli::Failure("--allowfailures must be >= 0");
+  if (args.shift < 0 || args.shift > 64) throw cli::Failure("--shift must be an integer in [0, 64]");
+  if (args.ssim && !(*args.ssim >= -1.0 && *args.ssim <= 1.0)) throw cli::Failure("--ssim must be in [-1, 1]");
+  if (args.flip && !(*args.flip >= 0.0 && *args.flip <= 1.0)) throw cli::Failure("--flip must be in [0, 1]");
+  if (args.scale && !(std::isfinite(*args.scale) && *args.scale > 0.0f))
+    throw cli::Failure("--scale must be a finite number > 0");
+
+  compare::Options o;
+  o.thresholds.fail = args.fail;
+  o.thresholds.failpercent = args.failpercent;
+  o.thresholds.hardfail = args.hardfail;
+  o.thresholds.warn = args.warn;
+  o.thresholds.warnpercent = args.warnpercent;
+  o.thresholds.hardwarn = args.hardwarn;
+  o.thresholds.allowfailures = args.allowfailures;
+  o.ignore_alpha = args.ignore_alpha;
+  o.linear = args.linear;
+  o.shift = args.shift;
+  o.ssim_min = args.ssim;
+  o.flip_max = args.flip;
+  o.perceptual = args.perceptual;
+
+  const compare::Image a = load(args.a, args.linear);
+  const compare::Image b = load(args.b, args.linear);
+  std::unique_ptr<compare::Image> mask;
+  if (!args.mask.empty()) mask = std::make_unique<compare::Image>(load(args.mask, false));
+
+  compare::Comparison c;
+  try {
+    c = compare::compare_images(a, b, o, mask.get());
+  } catch (const std::invalid_argument& e) {
+    throw cli::Failure(std::string("--mask ") + args.mask + ": " + e.what());
+  }
+
+  if (!args.diff_image.empty()) write(args.diff_image, compare::difference_image(c.pa, c.pb, args.scale.value_or(1.0f)));
+  if (!args.triptych.empty()) {
+    const float heat = args.scale ? *args.scale
+                                  : (c.metrics.max_error > 0.0f && std::isfinite(c.metrics.max_error) ? 1.0f / c.metrics.max_error : 1.0f);
+    write(args.triptych, compare::triptych(c.pa, c.pb, heat));
+  }
+
+  if (args.json)
+    std::cout << compare::json_report(c, o, args.a, args.b);
+  else
+    std::cout << compare::text_report(c, o, args.a, args.b, args.verbose, args.quiet);
+  std::cout.flush();
+  return compare::exit_code(c.verdict);
+}
+
+const cli::Registration reg{
+    "diff", "Compare two images as idiff does (exit 0 match, 1 warning, 2 failure, 4 unreadable)",
+    [](CLI::App& app) {
+      auto args = std::make_shared<DiffArgs>();
+      app.add_option("A", args->a, "First (expected) image")->required();
+      app.add_option("B", args->b, "Second (actual) image")->required();
+      app.add_option("--fail", args->fail, "Failure threshold on a value's absolute difference (default 1e-06)");
+      app.add_option("--failpercent", args->failpercent, "Percentage of pixels allowed over --fail (default 0)");
+      app.add_option("--hardfail", args->hardfail, "Fail if any value differs by more than this (default inf)");
+      app.add_option("--warn", args->warn, "Warning threshold (default 1e-06)");
+      app.add_option("--warnpercent", args->warnpercent, "Percentage of pixels allowed over --warn (default 0)");
+      app.add_option("--hardwarn", args->hardwarn, "Warn if any value differs by more than this (default inf)");
+      app.add_option("--allowfailures", args->allowfailures, "Number of failing pixels that still pass (default 0)");
+      app.add_flag("--linear", args->linear, "Decode sRGB-encoded images (PNG) to linear light before comparing");
+      app.add_flag("--ignore-alpha", args->ignore_alpha, "Leave the alpha channel out of the comparison");
+      app.add_option("--mask", args->mask, "Image whose zero pixels are left out of the comparison");
+      app.add_option("--shift", args->shift, "Tolerate translations up to N pixels (see docs/compare.md)");
+      app.add_option("--ssim", args->ssim, "Fail if SSIM (of luminance) is below T");
+      app.add_option("--flip", args->flip, "Fail if the mean LDR-FLIP error is above T");
+      app.add_flag("--perceptual", args->perceptual, "Report SSIM and FLIP without thresholds");
+      app.add_option("--diff-image", args->diff_image, "Write |A-B| * scale to this file");
+      app.add_option("--triptych", args->triptych, "Write expected | actual | heat map to this file");
+      app.add_option("--scale", args->scale, "Scale of the difference image and heat map (heat map default: 1/max error)");
+      app.add_flag("--json", args->json, "Print a JSON report instead of idiff's lines");
+      app.add_flag("-v,--verbose", args->verbose, "Print the report even when the images match");
+      app.add_flag("-q,--quiet", args->quiet, "Print only FAILURE");
+      return cli::Runner([args] { return run(*args); });
+    }};
+
+}  // namespace

@@ -1,0 +1,152 @@
+// Structural check of a PNG file (ISO/IEC 15948, W3C PNG 2nd edition): signature, chunk
+// lengths and CRCs, IHDR, and the IDAT zlib stream inflated to its end, whose size must be the
+// exact filtered-scanline size that IHDR implies (section 7.2 for the row layout, 8.2 for the
+// Adam7 passes). libpng treats "not enough image data" as a benign error, so a PNG cut inside
+// its pixel data can decode to garbage rows without failing: this check is what catches it.
+#include <splinefig/compare/io.hpp>
+
+#include <zlib.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+namespace splinefig::compare {
+namespace {
+
+std::uint32_t be32(const unsigned char* p) {
+  return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) | std::uint32_t(p[3]);
+}
+
+int png_channels(int colour_type) {
+  switch (colour_type) {
+    case 0: return 1;  // greyscale
+    case 2: return 3;  // truecolour
+    case 3: return 1;  // indexed
+    case 4: return 2;  // greyscale + alpha
+    case 6: return 4;  // truecolour + alpha
+    default: return 0;
+  }
+}
+
+bool valid_depth(int colour_type, int depth) {
+  switch (colour_type) {
+    case 0: return depth == 1 || depth == 2 || depth == 4 || depth == 8 || depth == 16;
+    case 3: return depth == 1 || depth == 2 || depth == 4 || depth == 8;
+    case 2: case 4: case 6: return depth == 8 || depth == 16;
+    default: return false;
+  }
+}
+
+// Bytes of filtered scanlines: each row is one filter byte plus ceil(w * bits / 8) bytes.
+std::uint64_t pass_bytes(std::uint64_t w, std::uint64_t h, std::uint64_t bits_per_pixel) {
+  if (w == 0 || h == 0) return 0;
+  return h * (1 + (w * bits_per_pixel + 7) / 8);
+}
+
+std::uint64_t expected_image_bytes(std::uint32_t width, std::uint32_t height, int bits_per_pixel, bool adam7) {
+  if (!adam7) return pass_bytes(width, height, std::uint64_t(bits_per_pixel));
+  // Adam7 passes: starting column/row and step of each of the seven passes.
+  static constexpr int xs[7] = {0, 4, 0, 2, 0, 1, 0}, ys[7] = {0, 0, 4, 0, 2, 0, 1};
+  static constexpr int dx[7] = {8, 8, 4, 4, 2, 2, 1}, dy[7] = {8, 8, 8, 4, 4, 2, 2};
+  std::uint64_t total = 0;
+  for (int p = 0; p < 7; ++p) {
+    const std::uint64_t w = width > std::uint32_t(xs[p]) ? (width - xs[p] + dx[p] - 1) / dx[p] : 0;
+    const std::uint64_t h = height > std::uint32_t(ys[p]) ? (height - ys[p] + dy[p] - 1) / dy[p] : 0;
+    total += pass_bytes(w, h, std::uint64_t(bits_per_pixel));
+  }
+  return total;
+}
+
+[[noreturn]] void bad(const std::string& path, const std::string& why) {
+  throw UnreadableImage(path + ": " + why);
+}
+
+}  // namespace
+
+void check_png_structure(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) bad(path, "cannot open file");
+  std::vector<unsigned char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  static constexpr unsigned char signature[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+  if (data.size() < 8 || std::memcmp(data.data(), signature, 8) != 0) bad(path, "not a PNG file (bad signature)");
+
+  std::size_t pos = 8;
+  bool have_ihdr = false, have_iend = false, idat_done = false, idat_seen = false;
+  std::uint32_t width = 0, height = 0;
+  int bits_per_pixel = 0;
+  bool adam7 = false;
+  std::uint64_t expected = 0, produced = 0;
+  bool stream_end = false;
+
+  z_stream zs{};
+  if (inflateInit(&zs) != Z_OK) bad(path, "zlib initialisation failed");
+  struct Guard { z_stream* z; ~Guard() { inflateEnd(z); } } guard{&zs};
+  std::array<unsigned char, 1 << 16> sink{};
+
+  while (pos < data.size()) {
+    if (data.size() - pos < 12) bad(path, "truncated PNG (incomplete chunk header at byte " + std::to_string(pos) + ")");
+    const std::uint32_t length = be32(&data[pos]);
+    const unsigned char* type = &data[pos + 4];
+    const std::string tname(reinterpret_cast<const char*>(type), 4);
+    if (length > 0x7fffffffu) bad(path, "corrupt PNG (chunk length out of range at byte " + std::to_string(pos) + ")");
+    if (data.size() - pos - 12 < length)
+      bad(path, "truncated PNG (chunk " + tname + " at byte " + std::to_string(pos) + " ends past the end of the file)");
+    const unsigned char* body = &data[pos + 8];
+    const std::uint32_t crc_stored = be32(body + length);
+    uLong crc = crc32(0L, Z_NULL, 0);
+    crc = crc32(crc, type, 4);
+    crc = crc32(crc, body, length);
+    if (std::uint32_t(crc) != crc_stored) bad(path, "corrupt PNG (CRC mismatch in chunk " + tname + ")");
+
+    if (!have_ihdr) {
+      if (tname != "IHDR" || length != 13) bad(path, "corrupt PNG (first chunk is not IHDR)");
+      width = be32(body);
+      height = be32(body + 4);
+      const int depth = body[8], colour_type = body[9];
+      if (width == 0 || height == 0 || width > 0x7fffffffu || height > 0x7fffffffu)
+        bad(path, "corrupt PNG (image size " + std::to_string(width) + " x " + std::to_string(height) + ")");
+      if (!valid_depth(colour_type, depth)) bad(path, "corrupt PNG (invalid bit depth or colour type)");
+      if (body[10] != 0 || body[11] != 0 || body[12] > 1) bad(path, "corrupt PNG (unknown compression, filter or interlace method)");
+      bits_per_pixel = png_channels(colour_type) * depth;
+      adam7 = body[12] == 1;
+      expected = expected_image_bytes(width, height, bits_per_pixel, adam7);
+      have_ihdr = true;
+    } else if (tname == "IDAT") {
+      if (idat_done) bad(path, "corrupt PNG (IDAT chunks are not consecutive)");
+      idat_seen = true;
+      zs.next_in = const_cast<unsigned char*>(body);
+      zs.avail_in = length;
+      while (zs.avail_in > 0 && !stream_end) {
+        zs.next_out = sink.data();
+        zs.avail_out = unsigned(sink.size());
+        const int rc = inflate(&zs, Z_NO_FLUSH);
+        produced += sink.size() - zs.avail_out;
+        if (rc == Z_STREAM_END) {
+          stream_end = true;
+        } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
+          bad(path, std::string("corrupt PNG (bad compressed pixel data: ") + (zs.msg ? zs.msg : "zlib error") + ")");
+        }
+        if (produced > expected) bad(path, "corrupt PNG (more pixel data than the header implies)");
+      }
+    } else {
+      if (idat_seen) idat_done = true;
+      if (tname == "IEND") {
+        have_iend = true;
+        break;
+      }
+    }
+    pos += 12 + std::size_t(length);
+  }
+
+  if (!have_ihdr) bad(path, "truncated PNG (no IHDR chunk)");
+  if (!idat_seen) bad(path, "truncated PNG (no pixel data)");
+  if (!stream_end || produced != expected)
+    bad(path, "truncated PNG (pixel data ends after " + std::to_string(produced) + " of " + std::to_string(expected) +
+                  " bytes)");
+  if (!have_iend) bad(path, "truncated PNG (no IEND chunk)");
+}
+
+}  // namespace splinefig::compare
