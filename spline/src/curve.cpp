@@ -38,8 +38,10 @@ std::size_t min_knots(const Basis& b, Ends ends) {
 
 Curve make_curve(const Basis& b, const Points& knots, Ends ends) {
   const std::size_t n = knots.size();
-  if (n == 0 || knots.dim < 1) throw CurveError("no knots");
   const std::size_t need = min_knots(b, ends);
+  if (n == 0 || knots.dim < 1)
+    throw CurveError("no knots (" + b.spec + " with " + to_string(ends) + " ends needs at least " +
+                     std::to_string(need) + ")");
   if (n < need)
     throw CurveError("too few knots: " + std::to_string(n) + " given, " + b.spec + " with " +
                      to_string(ends) + " ends needs at least " + std::to_string(need));
