@@ -1,0 +1,63 @@
+#pragma once
+// Image resampling with a spline basis function (or box, tent, lanczos3) as the reconstruction
+// filter. The contract (CONTRACT.md, docs/resample.md), per axis with S source and D destination
+// pixels:
+//   output pixel i has its centre at i + 1/2, which maps to the source position x = (i+1/2) S/D;
+//   the filter is widened by f = max(1, S/D) (only when reducing);
+//   value = sum_j w_j p[j] / sum_j w_j with w_j = k((x - (j + 1/2)) / f)
+// (our sign: k(x - centre_j), the kernel convention; OpenImageIO evaluates k(centre_j - x),
+// which mirrors an asymmetric Beta kernel). Samples outside [0, S) follow the edge mode:
+//   clamp  the nearest edge pixel;
+//   mirror ... p1 p0 | p0 p1 ... (half-sample symmetric);
+//   wrap   periodic;
+//   black  0, still counted in the weight sum.
+// Separable: the weights of each axis are computed once, in double precision, and normalised;
+// the image is filtered horizontally into a small ring of rows and then vertically, in parallel
+// over bands of output rows. Every output value is computed by the same operations whatever the
+// thread count, so the result is bit-identical for any number of threads.
+#include <splinefig/resample/image.hpp>
+#include <splinefig/spline/filter_analysis.hpp>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace splinefig {
+
+enum class Edge { clamp, mirror, wrap, black };
+std::optional<Edge> parse_edge(std::string_view name);
+const char* edge_name(Edge e);
+
+// Source index for a position j outside [0, size) under an edge mode; -1 for black.
+long edge_index(long j, long size, Edge e);
+
+// The weights of one axis. Output i reads the extended source positions
+// first[i] .. first[i] + taps - 1 (which may lie outside [0, src)) with weights
+// w[i*taps .. i*taps + taps - 1], already divided by their sum.
+struct AxisWeights {
+  int src = 0, dst = 0, taps = 0;
+  std::vector<long> first;
+  std::vector<float> w;
+  long lo = 0, hi = 0;  // smallest and largest extended position any output reads
+};
+// Throws std::invalid_argument when the weights of some output sum to zero.
+AxisWeights axis_weights(const Filter& f, int src, int dst, Edge edge);
+
+struct ResampleOptions {
+  Edge edge = Edge::clamp;
+  bool interpolating = false;  // apply the inverse prefilter first (prefilter.hpp)
+  int threads = 0;             // 0: all hardware threads
+};
+
+// Resamples `src` into `dst`, whose width and height give the new size; dst.channels must
+// equal src.channels and dst.pixels must be allocated. Throws std::invalid_argument for bad
+// arguments (empty images, channel mismatch, a filter without a stable prefilter inverse).
+void resample_into(const Image& src, Image& dst, const Filter& f, const ResampleOptions& opt = {});
+Image resample(const Image& src, int width, int height, const Filter& f, const ResampleOptions& opt = {});
+
+// The worker count `threads` (0: hardware) resolves to.
+int resolve_threads(int threads);
+
+}  // namespace splinefig
