@@ -1,0 +1,54 @@
+// `splinefig render SPEC.toml -o OUT.(png|exr) [--scale S] [--threads N]`: one figure spec
+// (docs/spec.md) rendered to one image.
+#include "command.hpp"
+
+#include <splinefig/figures/figure.hpp>
+#include <splinefig/version.hpp>
+
+#include <filesystem>
+#include <memory>
+
+namespace {
+
+struct RenderArgs {
+  std::string spec, out;
+  double scale = 1;
+  int threads = 0;
+};
+
+std::string extension_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+const splinefig::cli::Registration reg{
+    "render", "Render one TOML figure spec to a PNG or EXR image", [](CLI::App& app) {
+      auto a = std::make_shared<RenderArgs>();
+      app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->required();
+      app.add_option("-o,--output", a->out, "Output image: .png (8-bit sRGB) or .exr (float linear)")->required();
+      app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1)");
+      app.add_option("--threads", a->threads, "Rendering threads (default: all cores)");
+      return splinefig::cli::Runner([a] {
+        using splinefig::cli::Failure;
+        namespace fig = splinefig::figures;
+        const std::string ext = extension_of(a->out);
+        if (ext != ".png" && ext != ".exr") throw Failure("-o " + a->out + ": the output must end in .png or .exr");
+        if (!(a->scale > 0) || a->scale > 64) throw Failure("--scale " + std::to_string(a->scale) + ": must be in (0, 64]");
+        if (a->threads < 0) throw Failure("--threads: must not be negative");
+        try {
+          fig::FigureSpec spec = fig::load_spec(a->spec);
+          fig::check_scaled_canvas(spec, a->scale, "--scale");
+          fig::RenderedFigure r = fig::render_figure(spec, {a->scale, a->threads});
+          splinefig::render::WriteOptions w;
+          w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
+          w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
+          splinefig::render::write_image(r.image, a->out, w);
+        } catch (const fig::SpecFileError& e) {
+          throw Failure(e.what());
+        }
+        return 0;
+      });
+    }};
+
+}  // namespace

@@ -1,0 +1,43 @@
+#pragma once
+// Axes: the map from data to pixels, and tick selection.
+//
+// An axis maps its range [d0, d1] linearly onto pixels [p0, p1] after a transfer f:
+// f(v) = v (linear), log10 v (log), or 20 log10 |v| (db: the range is given in dB and the
+// data are magnitudes). For y, p0 is the bottom of the plot box and p1 its top (CONTRACT.md).
+#include <splinefig/figures/spec.hpp>
+
+#include <string>
+#include <vector>
+
+namespace splinefig::figures {
+
+struct AxisMap {
+  Scale scale = Scale::Linear;
+  double d0 = 0, d1 = 1;  // the range as given (dB for db axes)
+  double p0 = 0, p1 = 1;  // pixels
+
+  double transfer(double v) const;  // data -> the linear domain of the axis
+  double to_pixel(double v) const;
+  double from_pixel(double p) const;  // inverse, in the linear domain's terms mapped back to data
+  double lo() const;  // the range in the linear domain
+  double hi() const;
+};
+
+struct Tick {
+  double value;       // data value (magnitude for db axes mapped in dB: value is in dB)
+  std::string label;
+};
+
+// Nice ticks for [lo, hi] (either order): steps 1, 2 or 5 times a power of ten, about
+// `target` of them, every tick inside the range (to 1e-9 of the step). `step` > 0 forces
+// the step. Labels print just the digits the step needs, with a true minus sign.
+std::vector<Tick> nice_ticks(double lo, double hi, double target, double step = 0);
+// The step nice_ticks would use.
+double nice_step(double lo, double hi, double target);
+// Decades 10^k inside [lo, hi] (lo, hi > 0), labelled 10^k with superscripts; falls back to
+// nice_ticks when the range spans less than one decade.
+std::vector<Tick> log_ticks(double lo, double hi);
+// A number with `decimals` digits after the point, "-" written as U+2212.
+std::string format_number(double v, int decimals);
+
+}  // namespace splinefig::figures

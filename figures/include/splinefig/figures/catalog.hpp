@@ -1,0 +1,34 @@
+#pragma once
+// The built-in figures (figures/specs/*.toml) and what `splinefig figures` writes besides
+// the images: index.json (CONTRACT.md) and the gallery page index.html.
+#include <splinefig/figures/figure.hpp>
+
+#include <string>
+#include <vector>
+
+namespace splinefig::figures {
+
+// The directory of the built-in specs: $SPLINEFIG_SPECS_DIR if set, else the source tree's
+// figures/specs when it exists, else share/splinefig/specs next to the executable
+// (../share/splinefig/specs), else the install prefix's. Empty if none exists.
+std::string builtin_specs_dir();
+
+// Spec files of a directory (*.toml), sorted by their `order` key then by name.
+struct SpecFile {
+  std::string name;  // file stem: the --only name and output file stem
+  std::string path;
+};
+std::vector<SpecFile> list_specs(const std::string& dir);
+
+// index.json: {"figures": [{"name", "title", "caption", "files", "width", "height",
+// "axes": [{"pixel_box", "x_range", "y_range", "x_scale", "y_scale", "series": [{"label",
+// "color", "kind"}]}]}]}.
+std::string index_json(const std::vector<FigureInfo>& figures);
+// A self-contained gallery page: every figure with its title and caption. After loading
+// it marks each <img> with data-loaded="yes" or "no", and <body> with data-images-ok.
+std::string gallery_html(const std::vector<FigureInfo>& figures);
+
+// Writes `text` to `path` through a temporary file in the same directory and a rename.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace splinefig::figures

@@ -1,0 +1,57 @@
+#pragma once
+// Figures: a spec laid out and drawn. render_figure() turns a FigureSpec into an image
+// plus the facts that image-based tests and index.json need (CONTRACT.md): where each
+// axes' plot box is in pixels, its data ranges, and the colour of every labelled series.
+#include <splinefig/figures/axes.hpp>
+#include <splinefig/figures/spec.hpp>
+
+#include <string>
+#include <vector>
+
+namespace splinefig::figures {
+
+struct SeriesInfo {
+  std::string label;
+  std::string color;  // "#rrggbb"
+  std::string kind;   // curve, kernel, series, polygon, fill, rule
+};
+
+struct AxesInfo {
+  std::array<double, 4> pixel_box{};  // left, top, right, bottom in output pixels
+  std::array<double, 2> x_range{}, y_range{};
+  Scale x_scale = Scale::Linear, y_scale = Scale::Linear;
+  std::vector<SeriesInfo> series;
+  std::vector<double> x_ticks, y_ticks;
+
+  AxisMap x_map() const;  // data -> output pixels, as CONTRACT.md states
+  AxisMap y_map() const;
+};
+
+struct FigureInfo {
+  std::string name, title, caption;
+  int width = 0, height = 0;  // output pixels
+  std::vector<AxesInfo> axes;
+  std::vector<std::string> files;  // filled in by whoever writes the files
+};
+
+struct RenderOptions {
+  double scale = 1;  // output pixels per spec pixel
+  int threads = 0;   // <= 0: all hardware threads
+};
+
+struct RenderedFigure {
+  render::Image image;
+  FigureInfo info;
+};
+
+// Throws SpecFileError if the scaled canvas is too large, std::runtime_error if an image
+// element cannot be read.
+RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& options = {});
+
+// The layout alone (no rasterization): the same info render_figure() reports.
+FigureInfo layout_figure(const FigureSpec& spec, double scale = 1);
+
+// Checks the scaled canvas against the size limits; throws SpecFileError naming `what`.
+void check_scaled_canvas(const FigureSpec& spec, double scale, const std::string& what);
+
+}  // namespace splinefig::figures

@@ -1,0 +1,38 @@
+#pragma once
+// Spline curves and kernels turned into pixel polylines, sampled adaptively.
+//
+// On linear axes the map from data to pixels is affine, so a polynomial piece stays a
+// polynomial X(u) in pixels. Cut into m equal parameter steps, each chord lies within
+// (1/8) max|X''| / m^2 of its arc (the interpolation error of a linear interpolant), so
+// m = ceil(sqrt(max|X''| / (8 tol))) steps keep the flatness <= tol; max|X''| is bounded
+// from the Horner coefficients. On log axes the pieces are split recursively until the
+// midpoints and quarter points lie within tol of their chords.
+#include <splinefig/figures/axes.hpp>
+#include <splinefig/spline/curve.hpp>
+
+#include <vector>
+
+namespace splinefig::figures {
+
+struct PixelMap {
+  AxisMap x, y;
+  Vec2 operator()(Vec2 d) const { return {x.to_pixel(d.x), y.to_pixel(d.y)}; }
+  bool affine() const { return x.scale == Scale::Linear && y.scale == Scale::Linear; }
+};
+
+// The whole curve as one polyline in pixels (closed curves: last point = first point).
+std::vector<Vec2> sample_curve(const Curve& curve, const PixelMap& map, double tolerance);
+
+// The kernel of `basis` times `scale` over [s0, s1], one polyline per polynomial piece
+// left to right (piece p covers [lo + p, lo + p + 1) of the support [lo, hi]); the parts of
+// [s0, s1] outside the support (where k = 0) join the first and last piece. Pieces outside
+// [s0, s1] come back empty.
+std::vector<std::vector<Vec2>> sample_kernel(const Basis& basis, double s0, double s1, double scale,
+                                             const PixelMap& map, double tolerance);
+
+// Parameters t of `count` points evenly spaced in arc length (data space) along the
+// curve, the first at t = 0 and the last at t = segments(). Arc length by 8-point
+// Gauss-Legendre on 16 sub-intervals per piece, inverted by Newton steps.
+std::vector<double> arclength_parameters(const Curve& curve, int count);
+
+}  // namespace splinefig::figures

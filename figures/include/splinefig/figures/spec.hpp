@@ -1,0 +1,268 @@
+#pragma once
+// A figure spec: the parsed, validated form of a TOML figure file (docs/spec.md).
+//
+// A spec is a canvas plus a list of items drawn in document order. Items are either
+// pixel-space primitives (polyline, polygon, circle, marker, text, image) or axes: panels
+// that map data coordinates to pixels and hold plot elements (spline curves, kernels,
+// data series, control polygons, fills, labels, annotations). Everything here is plain
+// data; load_spec() checks every value so that drawing can assume valid input.
+#include <splinefig/renderer/renderer.hpp>
+#include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/curve.hpp>
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace splinefig::figures {
+
+using render::Color;
+using render::Vec2;
+
+// A bad spec: the message is one line, "FILE:LINE: KEY: what is wrong".
+struct SpecFileError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Largest canvas: 32768 px a side and 2^28 pixels in all (after --scale).
+inline constexpr int kMaxCanvasSide = 32768;
+inline constexpr long long kMaxCanvasPixels = 1LL << 28;
+
+struct Canvas {
+  int width = 800, height = 500;
+  Color background{1, 1, 1, 1};
+  std::string filter = "box";  // "box", "tent" or a basis spec
+};
+
+// A stroke's look: width in pixels at 1x, colour, joins, caps and dashes.
+struct Pen {
+  Color color{0, 0, 0, 1};
+  render::StrokeStyle style;
+};
+
+struct Font {
+  double size = 13;
+  Color color{0.0331048f, 0.0331048f, 0.0331048f, 1};  // #333333 in linear light
+  bool bold = false;
+};
+
+struct TextAnchor {
+  render::HAlign halign = render::HAlign::Left;
+  render::VAlign valign = render::VAlign::Baseline;
+};
+
+// ---- Pixel-space primitives -------------------------------------------------------------
+
+struct PolylineItem {
+  std::vector<Vec2> points;
+  bool closed = false;
+  Pen pen;
+};
+
+struct PolygonItem {
+  std::vector<std::vector<Vec2>> contours;
+  render::FillRule rule = render::FillRule::NonZero;
+  Color color;
+};
+
+struct CircleItem {
+  Vec2 centre;
+  double radius = 1;
+  std::optional<Color> fill;
+  std::optional<Pen> stroke;
+};
+
+struct MarkerItem {
+  std::vector<Vec2> points;
+  render::Marker shape = render::Marker::Circle;
+  double size = 6;
+  Color color;
+};
+
+struct TextItem {
+  Vec2 at;
+  std::string text;
+  Font font;
+  TextAnchor anchor;
+};
+
+// Pixels to place: from a file (any format OpenImageIO reads) or given inline as rows of
+// grey values or rows of [r,g,b(,a)] in linear light. Sampled nearest (pixel art) or
+// bilinear into the target rectangle.
+struct Raster {
+  std::string file;  // resolved path, or empty when data is inline
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> data;  // row-major, `channels` floats per pixel (inline data only)
+  bool nearest = true;
+  bool srgb_data = false;   // inline data given as sRGB values
+};
+
+struct ImageItem {
+  Raster raster;
+  Vec2 at;      // top-left corner in pixels
+  Vec2 size;    // width, height in pixels (default: the raster's own size)
+  bool has_size = false;
+};
+
+// ---- Plot elements (inside axes, data coordinates) --------------------------------------
+
+// How an element's label is shown.
+struct Labelling {
+  std::string label;                 // empty: no label
+  bool in_legend = true;             // false: placed next to the data instead
+  std::optional<double> label_at;    // data x (or curve parameter) where an inline label goes
+  std::optional<Vec2> label_offset;  // pixel offset of an inline label from its data point
+};
+
+// A spline through/near the knots: X(t) = sum_j x[j] k(t - j), sampled adaptively to
+// flatness <= 0.05 px at the output scale and stroked as one path.
+struct CurveElement {
+  std::vector<Vec2> knots;
+  std::string basis_spec;
+  Basis basis;
+  Ends ends = Ends::open;
+  int marks = 0;              // markers along the curve (0: none)
+  bool marks_by_arclength = false;  // evenly spaced in arc length instead of in t
+  double mark_size = 5;
+  std::optional<Color> mark_color;
+  std::optional<Color> color;  // unset: taken from the axes palette
+  render::StrokeStyle style;
+  Labelling label;
+  bool show_knots = false;
+  double knot_size = 5;
+};
+
+// A basis function k(s) drawn as its pieces (each polynomial piece on one unit interval).
+struct KernelElement {
+  std::string basis_spec;
+  Basis basis;
+  std::optional<std::array<double, 2>> range;  // default: the kernel's support
+  std::optional<Color> color;                  // one colour for the whole kernel
+  std::vector<Color> piece_colors;             // per piece, left to right
+  std::vector<std::string> piece_labels;       // per piece, left to right, inline
+  double scale = 1;                            // y multiplier
+  render::StrokeStyle style;
+  Labelling label;
+  bool show_knots = false;                     // dots at the integer knots
+  double knot_size = 5;
+};
+
+enum class SeriesStyle { Line, Markers, LineMarkers, Steps, Stems };
+
+// Generic data: points joined by lines, marked, stepped or stemmed. Control polygons
+// ([[axes.polygon]]) and marker sets ([[axes.markers]]) are series with other defaults.
+struct SeriesElement {
+  std::vector<Vec2> points;
+  SeriesStyle style = SeriesStyle::Line;
+  bool closed = false;
+  std::optional<Color> color;
+  render::StrokeStyle style_stroke;
+  render::Marker marker = render::Marker::Circle;
+  double marker_size = 6;
+  std::optional<Color> marker_color;
+  Labelling label;
+};
+
+// A filled area: between y and y2 (or a baseline) over x, or a polygon in data space.
+struct FillElement {
+  std::vector<Vec2> upper;
+  std::vector<Vec2> lower;  // same x's reversed at drawing; empty when polygon
+  bool polygon = false;
+  Color color;
+  Labelling label;
+};
+
+struct TextElement {
+  Vec2 at;  // data
+  std::string text;
+  Vec2 offset;  // pixels
+  Font font;
+  TextAnchor anchor;
+};
+
+// Text at `at` with an arrow from near the text to `to` (both data).
+struct AnnotationElement {
+  Vec2 at, to;
+  std::string text;
+  Font font;
+  TextAnchor anchor;
+  Color arrow_color;
+  double arrow_width = 1;
+};
+
+// A horizontal or vertical reference line across the whole axes.
+struct RuleElement {
+  bool horizontal = true;
+  double value = 0;
+  Pen pen;
+  Labelling label;
+};
+
+struct ImageElement {
+  Raster raster;
+  std::array<double, 4> extent{};  // x0, x1, y0, y1 in data
+};
+
+using PlotElement = std::variant<CurveElement, KernelElement, SeriesElement, FillElement, TextElement,
+                                 AnnotationElement, RuleElement, ImageElement>;
+
+enum class Scale { Linear, Log, Decibel };
+enum class Frame { Box, LeftBottom, None };
+
+struct AxisSpec {
+  std::optional<std::array<double, 2>> range;  // unset: from the data
+  Scale scale = Scale::Linear;
+  std::string label;
+  std::optional<std::vector<double>> ticks;     // unset: nice 1-2-5 ticks; empty: none
+  std::vector<std::string> tick_labels;         // with explicit ticks only
+  std::optional<double> tick_step;              // force the step of automatic ticks
+  std::vector<double> marks;                    // knots marked on the axis (small triangles)
+};
+
+enum class LegendPlace { Auto, None, UpperLeft, UpperRight, LowerLeft, LowerRight, UpperCenter, LowerCenter };
+
+struct AxesSpec {
+  AxisSpec x, y;
+  std::string title;
+  bool grid = false;
+  bool equal_aspect = false;
+  bool zero_line = false;          // thin lines at x = 0 and y = 0 where inside
+  Frame frame = Frame::LeftBottom;
+  LegendPlace legend = LegendPlace::Auto;
+  std::string legend_title;
+  std::string palette = "viridis";
+  std::optional<std::array<int, 2>> cell;       // [row, col] in the figure's layout grid
+  std::optional<std::array<double, 4>> box;     // explicit pixel box [left, top, right, bottom]
+  std::vector<PlotElement> elements;
+  std::string where;  // "file:line" of the [axes] header, for messages
+};
+
+using Item = std::variant<PolylineItem, PolygonItem, CircleItem, MarkerItem, TextItem, ImageItem, AxesSpec>;
+
+struct Layout {
+  int rows = 1, cols = 1;
+  double margin = 16;   // around the panel grid, pixels at 1x
+  double spacing = 24;  // between panels
+};
+
+struct FigureSpec {
+  std::string name;     // file stem
+  std::string path;     // where it was read from
+  std::string title;    // drawn at the top unless show_title = false; also in index/gallery
+  std::string caption;  // gallery and index only
+  bool show_title = true;
+  double title_size = 18;
+  Canvas canvas;
+  Layout layout;
+  std::vector<Item> items;  // in document order
+};
+
+// Reads and validates a spec file. Throws SpecFileError (one line: file, line, key).
+FigureSpec load_spec(const std::string& path);
+// The same from text; `name` stands for the file in messages, `base_dir` resolves image paths.
+FigureSpec parse_spec(std::string_view text, const std::string& name, const std::string& base_dir = ".");
+
+}  // namespace splinefig::figures

@@ -1,0 +1,102 @@
+// Data-to-pixel maps and 1-2-5 tick selection.
+#include <splinefig/figures/axes.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace splinefig::figures {
+
+double AxisMap::transfer(double v) const {
+  switch (scale) {
+    case Scale::Log: return std::log10(v);
+    case Scale::Decibel: return 20.0 * std::log10(std::max(std::abs(v), 1e-300));
+    case Scale::Linear: break;
+  }
+  return v;
+}
+
+double AxisMap::lo() const { return scale == Scale::Log ? std::log10(d0) : d0; }
+double AxisMap::hi() const { return scale == Scale::Log ? std::log10(d1) : d1; }
+
+double AxisMap::to_pixel(double v) const { return p0 + (transfer(v) - lo()) / (hi() - lo()) * (p1 - p0); }
+
+double AxisMap::from_pixel(double p) const {
+  double t = lo() + (p - p0) / (p1 - p0) * (hi() - lo());
+  switch (scale) {
+    case Scale::Log: return std::pow(10.0, t);
+    case Scale::Decibel: return std::pow(10.0, t / 20.0);
+    case Scale::Linear: break;
+  }
+  return t;
+}
+
+std::string format_number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", std::max(0, decimals), v);
+  std::string s = buf;
+  // "-0" and "-0.0" are zero.
+  bool zero = s.find_first_not_of("-0.") == std::string::npos;
+  if (zero) s.erase(0, s[0] == '-' ? 1 : 0);
+  if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
+  return s;
+}
+
+double nice_step(double lo, double hi, double target) {
+  double span = std::abs(hi - lo);
+  target = std::max(target, 1.0);
+  double raw = span / target;
+  double p = std::pow(10.0, std::floor(std::log10(raw)));
+  double best = p, best_err = 1e300;
+  for (double m : {1.0, 2.0, 5.0, 10.0}) {
+    double step = m * p;
+    double count = std::floor(span / step + 1e-9) + 1;
+    double err = std::abs(count - (target + 1));
+    if (err < best_err - 1e-12) best = step, best_err = err;
+  }
+  return best;
+}
+
+std::vector<Tick> nice_ticks(double lo, double hi, double target, double step) {
+  if (lo > hi) std::swap(lo, hi);
+  if (!(step > 0)) step = nice_step(lo, hi, target);
+  int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+  // 2.5-type steps never arise (1-2-5 only), but forced steps may need one more digit.
+  double scaled = step * std::pow(10.0, decimals);
+  if (std::abs(scaled - std::round(scaled)) > 1e-6) ++decimals;
+  std::vector<Tick> ticks;
+  long long k0 = static_cast<long long>(std::ceil(lo / step - 1e-9));
+  long long k1 = static_cast<long long>(std::floor(hi / step + 1e-9));
+  for (long long k = k0; k <= k1 && ticks.size() < 1000; ++k) {
+    double v = k * step;
+    if (std::abs(v) < step * 1e-9) v = 0;
+    ticks.push_back({v, format_number(v, decimals)});
+  }
+  return ticks;
+}
+
+static std::string superscript(int k) {
+  static const char* digits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                 "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string s = k < 0 ? "\u207b" : "";
+  std::string d = std::to_string(std::abs(k));
+  for (char c : d) s += digits[c - '0'];
+  return s;
+}
+
+std::vector<Tick> log_ticks(double lo, double hi) {
+  if (lo > hi) std::swap(lo, hi);
+  int k0 = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));
+  int k1 = static_cast<int>(std::floor(std::log10(hi) + 1e-9));
+  if (k1 - k0 < 1) return nice_ticks(lo, hi, 5);
+  int every = std::max(1, (k1 - k0 + 7) / 8);
+  std::vector<Tick> ticks;
+  for (int k = k0; k <= k1; ++k) {
+    if ((k - k0) % every) continue;
+    std::string label = k == 0 ? "1" : k == 1 ? "10" : "10" + superscript(k);
+    ticks.push_back({std::pow(10.0, k), label});
+  }
+  return ticks;
+}
+
+}  // namespace splinefig::figures

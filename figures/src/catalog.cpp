@@ -1,0 +1,239 @@
+// Built-in spec lookup, index.json and the gallery page.
+#include <splinefig/figures/catalog.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace splinefig::figures {
+
+std::string builtin_specs_dir() {
+  std::vector<fs::path> candidates;
+  if (const char* env = std::getenv("SPLINEFIG_SPECS_DIR"); env && *env) return env;
+#ifdef SPLINEFIG_SPECS_DIR
+  candidates.emplace_back(SPLINEFIG_SPECS_DIR);
+#endif
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) candidates.push_back(exe.parent_path().parent_path() / "share" / "splinefig" / "specs");
+#ifdef SPLINEFIG_INSTALLED_SPECS_DIR
+  candidates.emplace_back(SPLINEFIG_INSTALLED_SPECS_DIR);
+#endif
+  for (const auto& c : candidates)
+    if (fs::is_directory(c, ec)) return c.string();
+  return {};
+}
+
+namespace {
+
+// The spec's `order = N` line if it has one (a cheap scan: the full parse comes later).
+double spec_order(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("[", 0) == 0) break;  // top-level keys come before the first table
+    if (line.rfind("order", 0) == 0) {
+      auto eq = line.find('=');
+      if (eq != std::string::npos) {
+        char* end = nullptr;
+        double v = std::strtod(line.c_str() + eq + 1, &end);
+        if (end != line.c_str() + eq + 1 && std::isfinite(v)) return v;
+      }
+    }
+  }
+  return 1e9;
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (c < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string json_number(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  // Shortest form that reads back to the same double.
+  for (int p = 1; p <= 17; ++p) {
+    char b2[32];
+    std::snprintf(b2, sizeof b2, "%.*g", p, v);
+    if (std::strtod(b2, nullptr) == v) return b2;
+  }
+  return buf;
+}
+
+const char* scale_name(Scale s) { return s == Scale::Log ? "log" : s == Scale::Decibel ? "db" : "linear"; }
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<SpecFile> list_specs(const std::string& dir) {
+  std::vector<std::pair<double, SpecFile>> found;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (!e.is_regular_file() || e.path().extension() != ".toml") continue;
+    found.push_back({spec_order(e.path()), {e.path().stem().string(), e.path().string()}});
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : a.second.name < b.second.name;
+  });
+  std::vector<SpecFile> out;
+  for (auto& f : found) out.push_back(std::move(f.second));
+  return out;
+}
+
+std::string index_json(const std::vector<FigureInfo>& figures) {
+  std::ostringstream o;
+  auto arr = [&](auto begin, auto end) {
+    o << "[";
+    for (auto it = begin; it != end; ++it) o << (it == begin ? "" : ", ") << json_number(*it);
+    o << "]";
+  };
+  o << "{\n  \"figures\": [";
+  for (size_t i = 0; i < figures.size(); ++i) {
+    const FigureInfo& f = figures[i];
+    o << (i ? "," : "") << "\n    {\n";
+    o << "      \"name\": " << json_string(f.name) << ",\n";
+    o << "      \"title\": " << json_string(f.title) << ",\n";
+    o << "      \"caption\": " << json_string(f.caption) << ",\n";
+    o << "      \"files\": [";
+    for (size_t k = 0; k < f.files.size(); ++k) o << (k ? ", " : "") << json_string(f.files[k]);
+    o << "],\n";
+    o << "      \"width\": " << f.width << ",\n      \"height\": " << f.height << ",\n";
+    o << "      \"axes\": [";
+    for (size_t a = 0; a < f.axes.size(); ++a) {
+      const AxesInfo& ax = f.axes[a];
+      o << (a ? "," : "") << "\n        {\"pixel_box\": ";
+      arr(ax.pixel_box.begin(), ax.pixel_box.end());
+      o << ", \"x_range\": ";
+      arr(ax.x_range.begin(), ax.x_range.end());
+      o << ", \"y_range\": ";
+      arr(ax.y_range.begin(), ax.y_range.end());
+      o << ", \"x_scale\": \"" << scale_name(ax.x_scale) << "\", \"y_scale\": \"" << scale_name(ax.y_scale) << "\",\n";
+      o << "         \"series\": [";
+      for (size_t s = 0; s < ax.series.size(); ++s) {
+        const SeriesInfo& si = ax.series[s];
+        o << (s ? ", " : "") << "{\"label\": " << json_string(si.label) << ", \"color\": " << json_string(si.color)
+          << ", \"kind\": " << json_string(si.kind) << "}";
+      }
+      o << "]}";
+    }
+    o << (f.axes.empty() ? "]\n" : "\n      ]\n") << "    }";
+  }
+  o << "\n  ]\n}\n";
+  return o.str();
+}
+
+std::string gallery_html(const std::vector<FigureInfo>& figures) {
+  std::ostringstream o;
+  o << R"(<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>splinefig figures</title>
+<style>
+  body { font-family: "DejaVu Sans", sans-serif; color: #222; background: #f4f4f4; margin: 0; padding: 24px; }
+  h1 { font-size: 22px; font-weight: bold; margin: 0 0 20px; }
+  main { display: grid; grid-template-columns: repeat(auto-fill, minmax(420px, 1fr)); gap: 24px; }
+  figure { margin: 0; background: #fff; border: 1px solid #ddd; padding: 12px; }
+  figure img { width: 100%; height: auto; display: block; }
+  figcaption { font-size: 14px; line-height: 1.4; margin-top: 8px; }
+  figcaption b { display: block; }
+  figcaption code { color: #777; font-size: 12px; }
+</style>
+</head>
+<body>
+<h1>splinefig figures</h1>
+<main>
+)";
+  for (const FigureInfo& f : figures) {
+    std::string png;
+    for (const auto& file : f.files)
+      if (file.size() > 4 && file.substr(file.size() - 4) == ".png") png = file;
+    if (png.empty() && !f.files.empty()) png = f.files.front();
+    o << "<figure id=\"" << html_escape(f.name) << "\">\n  <a href=\"" << html_escape(png) << "\"><img src=\""
+      << html_escape(png) << "\" width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\""
+      << html_escape(f.title.empty() ? f.name : f.title) << "\"></a>\n  <figcaption><b>"
+      << html_escape(f.title.empty() ? f.name : f.title) << "</b>" << html_escape(f.caption) << " <code>"
+      << html_escape(f.name) << "</code></figcaption>\n</figure>\n";
+  }
+  o << R"(</main>
+<script>
+  window.addEventListener("load", function () {
+    var ok = true;
+    document.querySelectorAll("img").forEach(function (img) {
+      var loaded = img.complete && img.naturalWidth > 0;
+      img.setAttribute("data-loaded", loaded ? "yes" : "no");
+      ok = ok && loaded;
+    });
+    document.body.setAttribute("data-images-ok", ok ? "yes" : "no");
+  });
+</script>
+</body>
+</html>
+)";
+  return o.str();
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  fs::path target(path);
+  fs::path tmp = target;
+  tmp += ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write " + tmp.string());
+    out << text;
+    out.flush();
+    if (!out) {
+      out.close();
+      fs::remove(tmp);
+      throw std::runtime_error("cannot write " + tmp.string());
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp);
+    throw std::runtime_error("cannot write " + path + ": " + ec.message());
+  }
+}
+
+}  // namespace splinefig::figures

@@ -1,0 +1,235 @@
+// The figure display list and its rendering (see painter.hpp).
+#include "painter.hpp"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace splinefig::figures::detail {
+
+void Painter::stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c) {
+  if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
+  ops_.push_back(StrokeOp{std::move(pts), closed, s, c});
+}
+void Painter::fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c) {
+  if (c.a <= 0) return;
+  ops_.push_back(FillOp{std::move(contours), rule, c});
+}
+void Painter::circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke) {
+  ops_.push_back(CircleOp{centre, r, fill, stroke});
+}
+void Painter::marker(render::Marker shape, Vec2 centre, double size, Color c) {
+  ops_.push_back(MarkerOp{shape, centre, size, c});
+}
+void Painter::text(std::string s, Vec2 at, const Font& f, TextAnchor a) {
+  if (s.empty()) return;
+  ops_.push_back(TextOp{std::move(s), at, f, a});
+}
+void Painter::image(Raster r, double x0, double y0, double x1, double y1) {
+  ops_.push_back(ImageOp{std::move(r), x0, y0, x1, y1});
+}
+
+render::TextStyle text_style(const Font& f, TextAnchor a, double scale) {
+  render::TextStyle t;
+  t.size = f.size * scale;
+  t.color = f.color;
+  t.halign = a.halign;
+  t.valign = a.valign;
+  t.font = f.bold ? "DejaVuSans-Bold" : "DejaVuSans";
+  return t;
+}
+
+render::TextExtent Painter::measure(const std::string& s, const Font& f) const {
+  render::TextExtent e = render::measure_text(s, text_style(f, {}, scale_));
+  e.width /= scale_;
+  e.ascent /= scale_;
+  e.descent /= scale_;
+  return e;
+}
+
+render::PixelFilter pixel_filter(const std::string& spec) {
+  if (spec == "box") return render::PixelFilter::box();
+  if (spec == "tent") return render::PixelFilter::tent();
+  Basis b = parse_basis(spec);
+  // The kernel's pieces on unit intervals, in ascending powers of the local variable:
+  // piece p is column n - p of M (kernel convention), whose u^(n-r) coefficient is M(r, c).
+  render::PixelFilter f;
+  f.kind = render::PixelFilter::Kind::Piecewise;
+  f.lo = kernel_support(b).lo;
+  f.name = b.spec;
+  const int n = b.degree;
+  for (int p = 0; p <= n; ++p) {
+    std::vector<double> coeffs(static_cast<size_t>(n + 1));
+    for (int r = 0; r <= n; ++r) coeffs[n - r] = b(r, n - p);
+    f.pieces.push_back(std::move(coeffs));
+  }
+  return f;
+}
+
+Vec2 raster_size(const Raster& r) {
+  if (r.file.empty()) return {static_cast<double>(r.width), static_cast<double>(r.height)};
+  auto in = OIIO::ImageInput::open(r.file);
+  if (!in) throw std::runtime_error("cannot read image \"" + r.file + "\"");
+  Vec2 s{static_cast<double>(in->spec().width), static_cast<double>(in->spec().height)};
+  in->close();
+  return s;
+}
+
+namespace {
+
+// Reads or builds the raster as premultiplied linear RGBA, w x h.
+struct Pixels {
+  int w = 0, h = 0;
+  std::vector<float> rgba;
+};
+
+Pixels load(const Raster& r) {
+  Pixels px;
+  if (!r.file.empty()) {
+    OIIO::ImageBuf buf(r.file);
+    if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+      throw std::runtime_error("cannot read image \"" + r.file + "\": " + buf.geterror());
+    const OIIO::ImageSpec& spec = buf.spec();
+    px.w = spec.width;
+    px.h = spec.height;
+    int nc = spec.nchannels;
+    std::vector<float> raw(static_cast<size_t>(px.w) * px.h * nc);
+    buf.get_pixels(OIIO::ROI(0, px.w, 0, px.h, 0, 1, 0, nc), OIIO::TypeDesc::FLOAT, raw.data());
+    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
+    bool srgb = cs.empty() ? (spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16)
+                           : (cs == "sRGB" || cs == "srgb");
+    px.rgba.resize(static_cast<size_t>(px.w) * px.h * 4);
+    for (size_t i = 0; i < static_cast<size_t>(px.w) * px.h; ++i) {
+      const float* s = &raw[i * nc];
+      float rgb[3];
+      for (int k = 0; k < 3; ++k) rgb[k] = nc >= 3 ? s[k] : s[0];
+      float a = nc == 4 ? s[3] : (nc == 2 ? s[1] : 1.0f);
+      for (int k = 0; k < 3; ++k) {
+        float v = srgb ? render::srgb_to_linear(rgb[k]) : rgb[k];
+        px.rgba[i * 4 + k] = v * a;  // file alpha is straight (PNG) - premultiply
+      }
+      px.rgba[i * 4 + 3] = a;
+    }
+  } else {
+    px.w = r.width;
+    px.h = r.height;
+    px.rgba.resize(static_cast<size_t>(px.w) * px.h * 4);
+    for (size_t i = 0; i < static_cast<size_t>(px.w) * px.h; ++i) {
+      float v = r.data[i * r.channels];
+      if (r.srgb_data) v = render::srgb_to_linear(v);
+      for (int k = 0; k < 3; ++k) px.rgba[i * 4 + k] = v;
+      px.rgba[i * 4 + 3] = 1;
+    }
+  }
+  return px;
+}
+
+// Composites the raster over the target rectangle [x0,x1) x [y0,y1) (output pixels):
+// each covered output pixel samples the source at its centre, nearest or bilinear.
+void composite(render::Image& dst, const Pixels& src, const Raster& r, double x0, double y0, double x1, double y1) {
+  int ix0 = std::max(0, static_cast<int>(std::floor(std::min(x0, x1))));
+  int ix1 = std::min(dst.width, static_cast<int>(std::ceil(std::max(x0, x1))));
+  int iy0 = std::max(0, static_cast<int>(std::floor(std::min(y0, y1))));
+  int iy1 = std::min(dst.height, static_cast<int>(std::ceil(std::max(y0, y1))));
+  auto fetch = [&](int x, int y, int k) {
+    x = std::clamp(x, 0, src.w - 1);
+    y = std::clamp(y, 0, src.h - 1);
+    return src.rgba[(static_cast<size_t>(y) * src.w + x) * 4 + k];
+  };
+  for (int y = iy0; y < iy1; ++y) {
+    for (int x = ix0; x < ix1; ++x) {
+      double cx = x + 0.5, cy = y + 0.5;
+      // Pixels of the target whose centre lies inside the rectangle.
+      if (cx < std::min(x0, x1) || cx >= std::max(x0, x1) || cy < std::min(y0, y1) || cy >= std::max(y0, y1)) continue;
+      double sx = (cx - x0) / (x1 - x0) * src.w, sy = (cy - y0) / (y1 - y0) * src.h;
+      float s[4];
+      if (r.nearest) {
+        int px = static_cast<int>(std::floor(sx)), py = static_cast<int>(std::floor(sy));
+        for (int k = 0; k < 4; ++k) s[k] = fetch(px, py, k);
+      } else {
+        double fx = sx - 0.5, fy = sy - 0.5;
+        int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
+        float tx = static_cast<float>(fx - px), ty = static_cast<float>(fy - py);
+        for (int k = 0; k < 4; ++k)
+          s[k] = (1 - ty) * ((1 - tx) * fetch(px, py, k) + tx * fetch(px + 1, py, k)) +
+                 ty * ((1 - tx) * fetch(px, py + 1, k) + tx * fetch(px + 1, py + 1, k));
+      }
+      float* d = dst.pixel(x, y);
+      for (int k = 0; k < 4; ++k) d[k] = s[k] + d[k] * (1 - s[3]);
+    }
+  }
+}
+
+void over(render::Image& dst, const render::Image& src) {
+  for (size_t i = 0; i < dst.rgba.size(); i += 4) {
+    float a = src.rgba[i + 3];
+    for (int k = 0; k < 4; ++k) dst.rgba[i + k] = src.rgba[i + k] + dst.rgba[i + k] * (1 - a);
+  }
+}
+
+std::vector<Vec2> scaled(const std::vector<Vec2>& pts, double s) {
+  std::vector<Vec2> out(pts.size());
+  for (size_t i = 0; i < pts.size(); ++i) out[i] = {pts[i].x * s, pts[i].y * s};
+  return out;
+}
+
+render::StrokeStyle scaled(render::StrokeStyle st, double s) {
+  st.width *= s;
+  for (double& d : st.dashes) d *= s;
+  st.dash_offset *= s;
+  return st;
+}
+
+}  // namespace
+
+render::Image paint(const Painter& p, int width, int height, Color background, const render::PixelFilter& filter,
+                    int threads) {
+  const double s = p.scale();
+  render::Image result;
+  bool first = true;
+  auto layer_start = p.ops().begin();
+  auto flush = [&](auto end) {
+    render::Scene scene(width, height, first ? background : Color{0, 0, 0, 0}, filter);
+    for (auto it = layer_start; it != end; ++it) {
+      std::visit(
+          [&](const auto& op) {
+            using T = std::decay_t<decltype(op)>;
+            if constexpr (std::is_same_v<T, StrokeOp>) {
+              auto pts = scaled(op.points, s);
+              scene.stroke_polyline(pts, op.closed, scaled(op.style, s), op.color);
+            } else if constexpr (std::is_same_v<T, FillOp>) {
+              std::vector<std::vector<Vec2>> c;
+              for (const auto& contour : op.contours) c.push_back(scaled(contour, s));
+              scene.fill_polygon(c, op.rule, op.color);
+            } else if constexpr (std::is_same_v<T, CircleOp>) {
+              Vec2 ctr{op.centre.x * s, op.centre.y * s};
+              if (op.fill) scene.fill_circle(ctr, op.radius * s, *op.fill);
+              if (op.stroke) scene.stroke_circle(ctr, op.radius * s, scaled(op.stroke->style, s), op.stroke->color);
+            } else if constexpr (std::is_same_v<T, MarkerOp>) {
+              scene.marker(op.shape, {op.centre.x * s, op.centre.y * s}, op.size * s, op.color);
+            } else if constexpr (std::is_same_v<T, TextOp>) {
+              scene.text(op.text, {op.at.x * s, op.at.y * s}, text_style(op.font, op.anchor, s));
+            }
+          },
+          *it);
+    }
+    render::Image img = render::rasterize(scene, threads);
+    if (first) result = std::move(img);
+    else over(result, img);
+    first = false;
+  };
+  for (auto it = p.ops().begin(); it != p.ops().end(); ++it) {
+    if (const auto* im = std::get_if<ImageOp>(&*it)) {
+      flush(it);
+      composite(result, load(im->raster), im->raster, im->x0 * s, im->y0 * s, im->x1 * s, im->y1 * s);
+      layer_start = it + 1;
+    }
+  }
+  if (first || layer_start != p.ops().end()) flush(p.ops().end());
+  return result;
+}
+
+}  // namespace splinefig::figures::detail

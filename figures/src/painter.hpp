@@ -1,0 +1,79 @@
+#pragma once
+// Internal: a display list in layout units (1x pixels) that is scaled to the output size
+// when it becomes renderer scenes. Raster images split the list into layers: the renderer
+// draws vector items, images are composited between layers (premultiplied, over).
+#include <splinefig/figures/spec.hpp>
+
+#include <variant>
+#include <vector>
+
+namespace splinefig::figures::detail {
+
+struct StrokeOp {
+  std::vector<Vec2> points;
+  bool closed;
+  render::StrokeStyle style;
+  Color color;
+};
+struct FillOp {
+  std::vector<std::vector<Vec2>> contours;
+  render::FillRule rule;
+  Color color;
+};
+struct CircleOp {
+  Vec2 centre;
+  double radius;
+  std::optional<Color> fill;
+  std::optional<Pen> stroke;
+};
+struct MarkerOp {
+  render::Marker shape;
+  Vec2 centre;
+  double size;
+  Color color;
+};
+struct TextOp {
+  std::string text;
+  Vec2 at;
+  Font font;
+  TextAnchor anchor;
+};
+struct ImageOp {
+  Raster raster;
+  double x0, y0, x1, y1;  // target rectangle in layout units
+};
+using Op = std::variant<StrokeOp, FillOp, CircleOp, MarkerOp, TextOp, ImageOp>;
+
+class Painter {
+ public:
+  explicit Painter(double scale) : scale_(scale) {}
+  double scale() const { return scale_; }
+
+  void stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c);
+  void fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c);
+  void circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke);
+  void marker(render::Marker shape, Vec2 centre, double size, Color c);
+  void text(std::string s, Vec2 at, const Font& f, TextAnchor a);
+  void image(Raster r, double x0, double y0, double x1, double y1);
+
+  // Text extent in layout units, measured at the output size.
+  render::TextExtent measure(const std::string& s, const Font& f) const;
+
+  const std::vector<Op>& ops() const { return ops_; }
+
+ private:
+  double scale_;
+  std::vector<Op> ops_;
+};
+
+// Width and height of a raster in its own pixels (reads the file header if needed).
+Vec2 raster_size(const Raster& r);
+
+render::TextStyle text_style(const Font& f, TextAnchor a, double scale);
+render::PixelFilter pixel_filter(const std::string& spec);
+
+// Renders the display list at the painter's scale onto a canvas of the given size (pixels).
+render::Image paint(const Painter& p, int width, int height, Color background, const render::PixelFilter& filter,
+                    int threads);
+
+}  // namespace splinefig::figures::detail

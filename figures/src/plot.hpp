@@ -1,0 +1,94 @@
+#pragma once
+// Internal: drawing one axes panel. Layout (ranges, box, ticks) in plot_layout.cpp, plot
+// elements in plot_elements.cpp, guides (frame, ticks, labels, legend) in plot_guides.cpp.
+// All coordinates here are layout units (1x pixels); the painter scales them.
+#include "painter.hpp"
+
+#include <splinefig/figures/figure.hpp>
+#include <splinefig/figures/sampling.hpp>
+
+#include <cstdint>
+
+namespace splinefig::figures::detail {
+
+struct Rect {
+  double left = 0, top = 0, right = 0, bottom = 0;
+  double width() const { return right - left; }
+  double height() const { return bottom - top; }
+  bool contains(Vec2 p) const { return p.x >= left && p.x <= right && p.y >= top && p.y <= bottom; }
+  Rect inflated(double d) const { return {left - d, top - d, right + d, bottom + d}; }
+};
+
+// Where data has been drawn, on a 1-unit grid: labels and the legend go where it is empty.
+class Occupancy {
+ public:
+  Occupancy(int width, int height);
+  void mark_polyline(const std::vector<Vec2>& pts, double radius);
+  void mark_point(Vec2 p, double radius);
+  void mark_rect(const Rect& r, int weight = 1);
+  long count(const Rect& r) const;  // marked cells inside r
+
+ private:
+  int w_, h_;
+  std::vector<std::uint16_t> cells_;
+};
+
+// The look of the guides (FIGURES.md house style).
+struct Guides {
+  Color axis = *render::parse_hex_color("#333333");
+  Color grid = *render::parse_hex_color("#e6e6e6");
+  Color zero = *render::parse_hex_color("#b3b3b3");
+  Font tick_font{12, *render::parse_hex_color("#333333"), false};
+  Font label_font{13, *render::parse_hex_color("#333333"), false};
+  Font title_font{14, *render::parse_hex_color("#222222"), true};
+  Font legend_font{12, *render::parse_hex_color("#333333"), false};
+  double tick_length = 5;
+};
+
+struct Panel {
+  Rect box;
+  PixelMap map;
+  std::vector<Tick> x_ticks, y_ticks;
+  std::array<double, 2> x_range{}, y_range{};
+};
+
+// A legend entry or an inline label's source: what to draw as the sample.
+struct Entry {
+  std::string label;
+  Color color;
+  render::StrokeStyle style;
+  bool line = true, markers = false, patch = false;
+  render::Marker marker = render::Marker::Circle;
+  double marker_size = 6;
+};
+
+// Pixel position of a tick (db axes: the tick value is in dB already).
+double tick_pixel(const AxisMap& m, double value);
+
+// Data bounds of the elements (for axes without a range).
+void data_bounds(const AxesSpec& ax, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& has_x, bool& has_y);
+
+// Lays the panel out inside `cell`.
+Panel layout_panel(const AxesSpec& ax, const Rect& cell, const Painter& p, const Guides& g);
+
+// Draws grid and zero lines (under the data).
+void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
+// Draws the elements; returns the series for index.json and the legend entries.
+void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy& occ, std::vector<SeriesInfo>& series,
+                   std::vector<Entry>& legend);
+// Frame, ticks, tick labels, axis labels, title (over the data), then the legend.
+void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter& p, const Guides& g);
+void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
+                 const Guides& g);
+
+// Places text next to one of the candidate points (pixels, best first) where it covers the
+// least drawn data and stays inside `box`; marks the chosen spot as used and returns the
+// text's (left, baseline) anchor.
+Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>& candidates, const Rect& box,
+                 const Painter& p, Occupancy& occ, double distance = 7);
+
+// Polyline clipping against a rectangle: the runs inside.
+std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& pts, bool closed, const Rect& r);
+std::vector<Vec2> clip_polygon(const std::vector<Vec2>& pts, const Rect& r);
+
+}  // namespace splinefig::figures::detail

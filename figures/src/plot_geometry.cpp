@@ -1,0 +1,125 @@
+// Occupancy grid for label placement, and clipping of polylines and polygons to a box.
+#include "plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace splinefig::figures::detail {
+
+Occupancy::Occupancy(int width, int height)
+    : w_(std::max(1, width)), h_(std::max(1, height)), cells_(static_cast<size_t>(w_) * h_, 0) {}
+
+void Occupancy::mark_point(Vec2 p, double radius) {
+  int x0 = std::max(0, static_cast<int>(std::floor(p.x - radius)));
+  int x1 = std::min(w_ - 1, static_cast<int>(std::floor(p.x + radius)));
+  int y0 = std::max(0, static_cast<int>(std::floor(p.y - radius)));
+  int y1 = std::min(h_ - 1, static_cast<int>(std::floor(p.y + radius)));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      auto& c = cells_[static_cast<size_t>(y) * w_ + x];
+      if (c < 60000) ++c;
+    }
+}
+
+void Occupancy::mark_polyline(const std::vector<Vec2>& pts, double radius) {
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    Vec2 a = pts[i], b = pts[i + 1];
+    double len = std::hypot(b.x - a.x, b.y - a.y);
+    if (!std::isfinite(len) || len > 1e5) continue;
+    int n = std::max(1, static_cast<int>(std::ceil(len / 1.5)));
+    for (int k = 0; k < n; ++k) mark_point({a.x + (b.x - a.x) * k / n, a.y + (b.y - a.y) * k / n}, radius);
+  }
+  if (!pts.empty()) mark_point(pts.back(), radius);
+}
+
+void Occupancy::mark_rect(const Rect& r, int weight) {
+  int x0 = std::max(0, static_cast<int>(std::floor(r.left))), x1 = std::min(w_ - 1, static_cast<int>(std::ceil(r.right)));
+  int y0 = std::max(0, static_cast<int>(std::floor(r.top))), y1 = std::min(h_ - 1, static_cast<int>(std::ceil(r.bottom)));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      auto& c = cells_[static_cast<size_t>(y) * w_ + x];
+      c = static_cast<std::uint16_t>(std::min(60000, c + weight));
+    }
+}
+
+long Occupancy::count(const Rect& r) const {
+  long n = 0;
+  int x0 = static_cast<int>(std::floor(r.left)), x1 = static_cast<int>(std::ceil(r.right));
+  int y0 = static_cast<int>(std::floor(r.top)), y1 = static_cast<int>(std::ceil(r.bottom));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      if (x < 0 || y < 0 || x >= w_ || y >= h_) {
+        n += 4;  // off the canvas: worse than data
+        continue;
+      }
+      n += cells_[static_cast<size_t>(y) * w_ + x] ? 1 : 0;
+    }
+  return n;
+}
+
+std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& pts, bool closed, const Rect& r) {
+  bool inside = std::all_of(pts.begin(), pts.end(), [&](Vec2 p) { return r.contains(p); });
+  if (inside) return {pts};
+  std::vector<Vec2> path = pts;
+  if (closed && !pts.empty()) path.push_back(pts.front());
+  std::vector<std::vector<Vec2>> runs;
+  std::vector<Vec2> run;
+  auto flush = [&] {
+    if (run.size() >= 2) runs.push_back(run);
+    run.clear();
+  };
+  for (size_t i = 0; i + 1 < path.size(); ++i) {
+    // Liang-Barsky on segment a + t (b - a), t in [0, 1].
+    Vec2 a = path[i], b = path[i + 1];
+    double dx = b.x - a.x, dy = b.y - a.y, t0 = 0, t1 = 1;
+    bool visible = true;
+    auto edge = [&](double p, double q) {
+      if (p == 0) {
+        if (q < 0) visible = false;
+        return;
+      }
+      double t = q / p;
+      if (p < 0) t0 = std::max(t0, t);
+      else t1 = std::min(t1, t);
+    };
+    edge(-dx, a.x - r.left);
+    edge(dx, r.right - a.x);
+    edge(-dy, a.y - r.top);
+    edge(dy, r.bottom - a.y);
+    if (!visible || t0 > t1) {
+      flush();
+      continue;
+    }
+    Vec2 ca{a.x + t0 * dx, a.y + t0 * dy}, cb{a.x + t1 * dx, a.y + t1 * dy};
+    if (t0 > 0) flush();
+    if (run.empty()) run.push_back(ca);
+    run.push_back(cb);
+    if (t1 < 1) flush();
+  }
+  flush();
+  return runs;
+}
+
+std::vector<Vec2> clip_polygon(const std::vector<Vec2>& pts, const Rect& r) {
+  // Sutherland-Hodgman against the four half-planes.
+  std::vector<Vec2> poly = pts;
+  auto clip = [&](auto inside, auto cross) {
+    std::vector<Vec2> out;
+    for (size_t i = 0; i < poly.size(); ++i) {
+      Vec2 a = poly[i], b = poly[(i + 1) % poly.size()];
+      bool ia = inside(a), ib = inside(b);
+      if (ia) out.push_back(a);
+      if (ia != ib) out.push_back(cross(a, b));
+    }
+    poly = std::move(out);
+  };
+  auto at_x = [](Vec2 a, Vec2 b, double x) { double t = (x - a.x) / (b.x - a.x); return Vec2{x, a.y + t * (b.y - a.y)}; };
+  auto at_y = [](Vec2 a, Vec2 b, double y) { double t = (y - a.y) / (b.y - a.y); return Vec2{a.x + t * (b.x - a.x), y}; };
+  clip([&](Vec2 p) { return p.x >= r.left; }, [&](Vec2 a, Vec2 b) { return at_x(a, b, r.left); });
+  clip([&](Vec2 p) { return p.x <= r.right; }, [&](Vec2 a, Vec2 b) { return at_x(a, b, r.right); });
+  clip([&](Vec2 p) { return p.y >= r.top; }, [&](Vec2 a, Vec2 b) { return at_y(a, b, r.top); });
+  clip([&](Vec2 p) { return p.y <= r.bottom; }, [&](Vec2 a, Vec2 b) { return at_y(a, b, r.bottom); });
+  return poly;
+}
+
+}  // namespace splinefig::figures::detail

@@ -1,0 +1,180 @@
+// Guides of an axes panel: grid, zero lines, frame, ticks and their labels, axis labels,
+// the panel title, inline label placement and the legend.
+#include "plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace splinefig::figures::detail {
+namespace {
+
+render::StrokeStyle hairline(double width = 1) {
+  render::StrokeStyle s;
+  s.width = width;
+  s.cap = render::Cap::Butt;
+  s.join = render::Join::Miter;
+  return s;
+}
+
+}  // namespace
+
+void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g) {
+  const Rect& b = panel.box;
+  if (ax.grid) {
+    for (const auto& t : panel.x_ticks) {
+      double x = tick_pixel(panel.map.x, t.value);
+      p.stroke({{x, b.top}, {x, b.bottom}}, false, hairline(), g.grid);
+    }
+    for (const auto& t : panel.y_ticks) {
+      double y = tick_pixel(panel.map.y, t.value);
+      p.stroke({{b.left, y}, {b.right, y}}, false, hairline(), g.grid);
+    }
+  }
+  if (ax.zero_line) {
+    if (ax.y.scale == Scale::Linear) {
+      double y = panel.map.y.to_pixel(0);
+      if (y > b.top + 0.5 && y < b.bottom - 0.5) p.stroke({{b.left, y}, {b.right, y}}, false, hairline(), g.zero);
+    }
+    if (ax.x.scale == Scale::Linear) {
+      double x = panel.map.x.to_pixel(0);
+      if (x > b.left + 0.5 && x < b.right - 0.5) p.stroke({{x, b.top}, {x, b.bottom}}, false, hairline(), g.zero);
+    }
+  }
+}
+
+void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter& p, const Guides& g) {
+  const Rect& b = panel.box;
+  if (ax.frame != Frame::None) {
+    // Spines lie just outside the box, on whole pixels at 1x: crisp at any integer scale.
+    const double l = b.left - 0.5, r = b.right + 0.5, t = b.top - 0.5, bo = b.bottom + 0.5;
+    if (ax.frame == Frame::Box) {
+      p.stroke({{l, t}, {r, t}, {r, bo}, {l, bo}}, true, hairline(), g.axis);
+    } else {
+      p.stroke({{l, t}, {l, bo}, {r, bo}}, false, hairline(), g.axis);
+    }
+    Font tf = g.tick_font;
+    for (const auto& tick : panel.x_ticks) {
+      double x = tick_pixel(panel.map.x, tick.value);
+      p.stroke({{x, b.bottom + 1}, {x, b.bottom + 1 + g.tick_length}}, false, hairline(), g.axis);
+      p.text(tick.label, {x, b.bottom + 1 + g.tick_length + 3}, tf, {render::HAlign::Center, render::VAlign::Top});
+    }
+    for (const auto& tick : panel.y_ticks) {
+      double y = tick_pixel(panel.map.y, tick.value);
+      p.stroke({{b.left - 1, y}, {b.left - 1 - g.tick_length, y}}, false, hairline(), g.axis);
+      p.text(tick.label, {b.left - 1 - g.tick_length - 4, y}, tf, {render::HAlign::Right, render::VAlign::Middle});
+    }
+    for (double m : ax.x.marks) {
+      double x = panel.map.x.to_pixel(m);
+      if (x < b.left - 0.5 || x > b.right + 0.5) continue;
+      double y = b.bottom + 1;
+      p.fill({{{x, y - 6}, {x - 4, y}, {x + 4, y}}}, render::FillRule::NonZero, g.axis);
+    }
+  }
+  if (!ax.x.label.empty()) {
+    double y = cell.bottom;
+    p.text(ax.x.label, {0.5 * (b.left + b.right), y}, g.label_font, {render::HAlign::Center, render::VAlign::Bottom});
+  }
+  if (!ax.y.label.empty()) {
+    p.text(ax.y.label, {std::max(cell.left, b.left - 30), b.top - 8}, g.label_font,
+           {render::HAlign::Left, render::VAlign::Bottom});
+  }
+  if (!ax.title.empty()) {
+    p.text(ax.title, {0.5 * (b.left + b.right), cell.top}, g.title_font, {render::HAlign::Center, render::VAlign::Top});
+  }
+}
+
+Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>& candidates, const Rect& box,
+                 const Painter& p, Occupancy& occ, double d) {
+  const render::TextExtent e = p.measure(text, f);
+  const double w = e.width, h = e.ascent + e.descent;
+  // Directions, best first: above, below, the four diagonals, then the sides.
+  const double dirs[8][2] = {{0, -1}, {0, 1}, {1, -1}, {-1, -1}, {1, 1}, {-1, 1}, {1, 0}, {-1, 0}};
+  const Rect inside = box.inflated(-2);
+  double best = 1e300;
+  Rect best_rect{};
+  for (size_t ci = 0; ci < candidates.size(); ++ci) {
+    Vec2 c = candidates[ci];
+    for (int di = 0; di < 8; ++di) {
+      double dx = dirs[di][0], dy = dirs[di][1];
+      double diag = (dx != 0 && dy != 0) ? 0.75 : 1.0;
+      double cx = c.x + dx * (d * diag + 0.5 * w), cy = c.y + dy * (d * diag + 0.5 * h);
+      Rect r{cx - 0.5 * w, cy - 0.5 * h, cx + 0.5 * w, cy + 0.5 * h};
+      double score = 10.0 * occ.count(r.inflated(2)) + 1.5 * static_cast<double>(ci) + 2.0 * di;
+      if (r.left < inside.left || r.right > inside.right || r.top < inside.top || r.bottom > inside.bottom) score += 1e6;
+      if (score < best) best = score, best_rect = r;
+    }
+  }
+  occ.mark_rect(best_rect.inflated(1), 4);
+  return {best_rect.left, best_rect.top + e.ascent};
+}
+
+void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
+                 const Guides& g) {
+  if (entries.empty() || ax.legend == LegendPlace::None) return;
+  const Font& f = g.legend_font;
+  const double pad = 8, sample = 28, gap = 8, row = 19;
+  double text_w = 0;
+  for (const auto& e : entries) text_w = std::max(text_w, p.measure(e.label, f).width);
+  Font tf = f;
+  tf.bold = true;
+  double title_h = 0;
+  if (!ax.legend_title.empty()) {
+    text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - sample - gap);
+    title_h = row;
+  }
+  const double w = std::ceil(pad + sample + gap + text_w + pad);
+  const double h = std::ceil(pad + title_h + row * entries.size() + pad - 4);
+  const Rect& b = panel.box;
+  const double inset = 10;
+  struct Spot {
+    LegendPlace place;
+    double x, y;
+  };
+  const double xl = b.left + inset, xr = b.right - inset - w, xc = std::round(0.5 * (b.left + b.right - w));
+  const double yt = b.top + inset, yb = b.bottom - inset - h, yc = std::round(0.5 * (b.top + b.bottom - h));
+  const std::vector<Spot> spots = {{LegendPlace::UpperRight, xr, yt}, {LegendPlace::UpperLeft, xl, yt},
+                                   {LegendPlace::LowerRight, xr, yb}, {LegendPlace::LowerLeft, xl, yb},
+                                   {LegendPlace::UpperCenter, xc, yt}, {LegendPlace::LowerCenter, xc, yb},
+                                   {LegendPlace::Auto, xr, yc},        {LegendPlace::Auto, xl, yc}};
+  Spot chosen = spots[0];
+  if (ax.legend == LegendPlace::Auto) {
+    long best = -1;
+    for (const auto& s : spots) {
+      long n = occ.count(Rect{s.x, s.y, s.x + w, s.y + h}.inflated(3));
+      if (best < 0 || n < best) best = n, chosen = s;
+    }
+  } else {
+    for (const auto& s : spots)
+      if (s.place == ax.legend) chosen = s;
+  }
+  double x = std::round(chosen.x), y = std::round(chosen.y);
+  occ.mark_rect({x, y, x + w, y + h}, 8);
+  Color bg{1, 1, 1, 0.92f};
+  p.fill({{{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}}}, render::FillRule::NonZero, bg);
+  p.stroke({{x + 0.5, y + 0.5}, {x + w - 0.5, y + 0.5}, {x + w - 0.5, y + h - 0.5}, {x + 0.5, y + h - 0.5}}, true,
+           hairline(), *render::parse_hex_color("#cccccc"));
+  double cy = y + pad;
+  if (!ax.legend_title.empty()) {
+    p.text(ax.legend_title, {x + pad, cy + 0.5 * row}, tf, {render::HAlign::Left, render::VAlign::Middle});
+    cy += row;
+  }
+  for (const auto& e : entries) {
+    double my = cy + 0.5 * row - 2;
+    double sx0 = x + pad, sx1 = x + pad + sample;
+    if (e.patch) {
+      p.fill({{{sx0, my - 6}, {sx1, my - 6}, {sx1, my + 6}, {sx0, my + 6}}}, render::FillRule::NonZero, e.color);
+    }
+    if (e.line) {
+      render::StrokeStyle st = e.style;
+      st.cap = st.dashes.empty() ? render::Cap::Round : render::Cap::Butt;
+      p.stroke({{sx0 + (st.dashes.empty() ? st.width / 2 : 0), my}, {sx1 - (st.dashes.empty() ? st.width / 2 : 0), my}},
+               false, st, e.color);
+    }
+    if (e.markers) p.marker(e.marker, {0.5 * (sx0 + sx1), my}, e.marker_size, e.color);
+    Font ef = f;
+    p.text(e.label, {sx1 + gap, my}, ef, {render::HAlign::Left, render::VAlign::Middle});
+    cy += row;
+  }
+}
+
+}  // namespace splinefig::figures::detail

@@ -1,0 +1,207 @@
+// Adaptive sampling of spline pieces into pixel polylines (see sampling.hpp).
+#include <splinefig/figures/sampling.hpp>
+
+#include <splinefig/spline/segment.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+
+namespace splinefig::figures {
+namespace {
+
+constexpr int kMaxSteps = 1 << 14;
+
+// A polynomial piece in pixel space: P(u) = sum_k cx[k] u^k, likewise y (ascending powers).
+struct PixelPoly {
+  std::vector<double> cx, cy;
+  Vec2 at(double u) const {
+    double x = 0, y = 0;
+    for (size_t k = cx.size(); k-- > 0;) x = x * u + cx[k], y = y * u + cy[k];
+    return {x, y};
+  }
+  // Bound on |P''(u)| over u in [u0, u1]: sum_k k(k-1) |c_k| max(|u0|,|u1|)^(k-2) per axis.
+  double second_derivative_bound(double u0, double u1) const {
+    double um = std::max(std::abs(u0), std::abs(u1));
+    auto bound = [&](const std::vector<double>& c) {
+      double b = 0, p = 1;
+      for (size_t k = 2; k < c.size(); ++k, p *= um) b += k * (k - 1) * std::abs(c[k]) * p;
+      return b;
+    };
+    return std::hypot(bound(cx), bound(cy));
+  }
+};
+
+// Uniform steps of a polynomial piece over [u0, u1], appending (skipping the first point
+// when `skip_first`).
+void sample_poly(const PixelPoly& p, double u0, double u1, double tol, bool skip_first, std::vector<Vec2>& out) {
+  double len = u1 - u0;
+  double m2 = p.second_derivative_bound(u0, u1) * len * len;
+  int steps = std::clamp(static_cast<int>(std::ceil(std::sqrt(m2 / (8 * tol)))), 1, kMaxSteps);
+  for (int j = skip_first ? 1 : 0; j <= steps; ++j) out.push_back(p.at(u0 + len * j / steps));
+}
+
+double chord_distance(Vec2 p, Vec2 a, Vec2 b) {
+  double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  double t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
+
+// Recursive flatness subdivision of any map u -> pixel (for log axes).
+void sample_recursive(const std::function<Vec2(double)>& f, double u0, double u1, Vec2 a, Vec2 b, double tol,
+                      int depth, std::vector<Vec2>& out) {
+  double um = 0.5 * (u0 + u1);
+  Vec2 m = f(um);
+  bool flat = depth >= 18;
+  if (!flat) {
+    Vec2 q1 = f(0.5 * (u0 + um)), q3 = f(0.5 * (um + u1));
+    flat = depth >= 2 && chord_distance(m, a, b) <= tol && chord_distance(q1, a, b) <= tol &&
+           chord_distance(q3, a, b) <= tol;
+  }
+  if (flat || !std::isfinite(m.x) || !std::isfinite(m.y)) {
+    out.push_back(b);
+    return;
+  }
+  sample_recursive(f, u0, um, a, m, tol, depth + 1, out);
+  sample_recursive(f, um, u1, m, b, tol, depth + 1, out);
+}
+
+void append_unique(std::vector<Vec2>& out, Vec2 p) {
+  if (out.empty() || out.back().x != p.x || out.back().y != p.y) out.push_back(p);
+}
+
+}  // namespace
+
+std::vector<Vec2> sample_curve(const Curve& c, const PixelMap& map, double tol) {
+  const int n = c.degree(), dim = c.dim();
+  std::vector<double> a(static_cast<size_t>((n + 1) * dim));
+  std::vector<Vec2> raw;
+  for (size_t i = 0; i < c.segments(); ++i) {
+    piece_coefficients(c, i, a);
+    // a[r*dim + d] multiplies u^(n-r): ascending powers k = n - r.
+    PixelPoly data;
+    data.cx.assign(n + 1, 0);
+    data.cy.assign(n + 1, 0);
+    for (int r = 0; r <= n; ++r) {
+      data.cx[n - r] = a[r * dim];
+      data.cy[n - r] = dim > 1 ? a[r * dim + 1] : 0;
+    }
+    if (map.affine()) {
+      // Affine: scale the coefficients; the constant term also shifts.
+      double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
+      double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
+      PixelPoly px = data;
+      for (auto& v : px.cx) v *= sx;
+      for (auto& v : px.cy) v *= sy;
+      px.cx[0] = map.x.to_pixel(data.cx[0]);
+      px.cy[0] = map.y.to_pixel(data.cy[0]);
+      sample_poly(px, 0, 1, tol, i > 0, raw);
+    } else {
+      auto f = [&](double u) { return map(data.at(u)); };
+      Vec2 p0 = f(0);
+      if (i == 0) raw.push_back(p0);
+      sample_recursive(f, 0, 1, p0, f(1), tol, 0, raw);
+    }
+  }
+  std::vector<Vec2> out;
+  out.reserve(raw.size());
+  for (Vec2 p : raw) append_unique(out, p);
+  return out;
+}
+
+std::vector<std::vector<Vec2>> sample_kernel(const Basis& b, double s0, double s1, double scale, const PixelMap& map,
+                                             double tol) {
+  const int n = b.degree;
+  Support sup = kernel_support(b);
+  std::vector<std::vector<Vec2>> pieces(static_cast<size_t>(n + 1));
+  for (int p = 0; p <= n; ++p) {
+    // Piece p covers [lo + p, lo + p + 1): column c = n - p (c_n is the leftmost piece).
+    int col = n - p;
+    double left = sup.lo + p;
+    double u0 = std::max(0.0, s0 - left), u1 = std::min(1.0, s1 - left);
+    if (!(u0 < u1)) continue;
+    PixelPoly data;
+    data.cx = {left, 1.0};
+    data.cy.assign(n + 1, 0);
+    for (int r = 0; r <= n; ++r) data.cy[n - r] = scale * b(r, col);
+    auto& out = pieces[p];
+    if (map.affine()) {
+      double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
+      double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
+      PixelPoly px = data;
+      for (auto& v : px.cx) v *= sx;
+      for (auto& v : px.cy) v *= sy;
+      px.cx[0] = map.x.to_pixel(data.cx[0]);
+      px.cy[0] = map.y.to_pixel(data.cy[0]);
+      sample_poly(px, u0, u1, tol, false, out);
+    } else {
+      auto f = [&](double u) { return map(data.at(u)); };
+      out.push_back(f(u0));
+      sample_recursive(f, u0, u1, out.back(), f(u1), tol, 0, out);
+    }
+  }
+  // Zero outside the support.
+  auto first = std::find_if(pieces.begin(), pieces.end(), [](const auto& v) { return !v.empty(); });
+  auto last = std::find_if(pieces.rbegin(), pieces.rend(), [](const auto& v) { return !v.empty(); });
+  if (s0 < sup.lo) {
+    std::vector<Vec2> zero = {map({s0, 0.0}), map({std::min(sup.lo, s1), 0.0})};
+    if (first != pieces.end()) first->insert(first->begin(), zero[0]);
+    else pieces.front() = zero;
+  }
+  if (s1 > sup.hi && last != pieces.rend()) last->push_back(map({s1, 0.0}));
+  else if (s1 > sup.hi && s0 >= sup.hi) pieces.back() = {map({s0, 0.0}), map({s1, 0.0})};
+  return pieces;
+}
+
+std::vector<double> arclength_parameters(const Curve& c, int count) {
+  static const std::array<double, 8> x = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
+                                          -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                                          0.7966664774136267,  0.9602898564975363};
+  static const std::array<double, 8> w = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
+                                          0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+                                          0.2223810344533745, 0.1012285362903763};
+  const int dim = c.dim();
+  std::vector<double> d(static_cast<size_t>(dim));
+  auto speed = [&](double t) {
+    evaluate(c, t, 1, d);
+    double s = 0;
+    for (double v : d) s += v * v;
+    return std::sqrt(s);
+  };
+  auto length = [&](double t0, double t1) {
+    double h = 0.5 * (t1 - t0), m = 0.5 * (t0 + t1), s = 0;
+    for (int k = 0; k < 8; ++k) s += w[k] * speed(m + h * x[k]);
+    return s * h;
+  };
+  const int sub = 16;
+  const double T = static_cast<double>(c.segments());
+  const int cells = static_cast<int>(c.segments()) * sub;
+  std::vector<double> cum(static_cast<size_t>(cells) + 1, 0.0);
+  for (int k = 0; k < cells; ++k) cum[k + 1] = cum[k] + length(static_cast<double>(k) / sub, static_cast<double>(k + 1) / sub);
+  std::vector<double> ts;
+  if (count <= 0) return ts;
+  const double total = cum.back();
+  for (int j = 0; j < count; ++j) {
+    if (j == 0) { ts.push_back(0); continue; }
+    if (j == count - 1) { ts.push_back(T); continue; }
+    double target = total * j / (count - 1);
+    int k = static_cast<int>(std::upper_bound(cum.begin(), cum.end(), target) - cum.begin()) - 1;
+    k = std::clamp(k, 0, cells - 1);
+    double a = static_cast<double>(k) / sub, b = static_cast<double>(k + 1) / sub;
+    double seg = cum[k + 1] - cum[k];
+    double t = seg > 0 ? a + (b - a) * (target - cum[k]) / seg : a;
+    for (int it = 0; it < 8; ++it) {  // Newton on L(t) = target within the cell, kept bracketed
+      double f = cum[k] + length(a, t) - target;
+      double v = speed(t);
+      if (!(v > 1e-12)) break;
+      double next = std::clamp(t - f / v, a, b);
+      if (std::abs(next - t) < 1e-13) { t = next; break; }
+      t = next;
+    }
+    ts.push_back(t);
+  }
+  return ts;
+}
+
+}  // namespace splinefig::figures

@@ -1,0 +1,281 @@
+// The figure spec loader: canvas, layout and pixel-space primitives (axes: spec_parse_axes.cpp).
+// Items keep the document order (by source line), so later items draw over earlier ones.
+#include "spec_parse.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace splinefig::figures {
+namespace detail {
+
+Basis checked_basis(TableReader& r, std::string_view key, const std::string& spec) {
+  try {
+    return parse_basis(spec);
+  } catch (const std::exception& e) {
+    r.fail(key, std::string("basis \"") + spec + "\": " + e.what());
+  }
+}
+
+Labelling parse_labelling(TableReader& r) {
+  Labelling l;
+  l.label = r.string("label", "");
+  l.in_legend = r.choice("label_position", {"legend", "inline"}, 0) == 0;
+  l.label_at = r.opt_number("label_at");
+  l.label_offset = r.opt_point("label_offset");
+  if (l.label_at || l.label_offset) l.in_legend = false;
+  return l;
+}
+
+Raster parse_raster(TableReader& r, const ParseContext& ctx) {
+  Raster raster;
+  auto file = r.opt_string("file");
+  auto data = r.matrix("data");
+  if (file && !data.empty()) r.fail("data", "give either file or data, not both");
+  if (file) {
+    std::filesystem::path p(*file);
+    if (p.is_relative()) p = std::filesystem::path(ctx.base_dir) / p;
+    if (!std::filesystem::exists(p)) r.fail("file", "no such image file \"" + p.string() + "\"");
+    raster.file = p.string();
+  } else {
+    if (data.empty() || data[0].empty()) r.fail("data", "an image needs `file` or non-empty `data` (rows of grey values)");
+    raster.height = static_cast<int>(data.size());
+    raster.width = static_cast<int>(data[0].size());
+    raster.channels = 1;
+    for (const auto& row : data) {
+      if (static_cast<int>(row.size()) != raster.width) r.fail("data", "rows must all have the same length");
+      for (double v : row) raster.data.push_back(static_cast<float>(v));
+    }
+  }
+  raster.nearest = r.choice("interpolation", {"nearest", "bilinear"}, 0) == 0;
+  raster.srgb_data = r.choice("encoding", {"linear", "srgb"}, 0) == 1;
+  return raster;
+}
+
+namespace {
+
+void check_canvas(TableReader& r, const Canvas& c) {
+  if (c.width > kMaxCanvasSide) r.fail("width", "larger than " + std::to_string(kMaxCanvasSide) + " px");
+  if (c.height > kMaxCanvasSide) r.fail("height", "larger than " + std::to_string(kMaxCanvasSide) + " px");
+  if (static_cast<long long>(c.width) * c.height > kMaxCanvasPixels)
+    r.fail("height", "canvas of " + std::to_string(static_cast<long long>(c.width) * c.height) +
+                         " pixels is over the limit of 2^28");
+}
+
+Canvas parse_canvas(TableReader& r) {
+  Canvas c;
+  c.width = r.integer("width", c.width, 1, 1 << 30);
+  c.height = r.integer("height", c.height, 1, 1 << 30);
+  check_canvas(r, c);
+  c.background = r.color("background", c.background);
+  c.filter = r.string("filter", c.filter);
+  if (c.filter != "box" && c.filter != "tent") checked_basis(r, "filter", c.filter);
+  r.finish();
+  return c;
+}
+
+Layout parse_layout(TableReader& r) {
+  Layout l;
+  l.rows = r.integer("rows", 1, 1, 64);
+  l.cols = r.integer("cols", 1, 1, 64);
+  l.margin = r.non_negative("margin", l.margin);
+  l.spacing = r.non_negative("spacing", l.spacing);
+  r.finish();
+  return l;
+}
+
+PolylineItem parse_polyline(TableReader& r) {
+  PolylineItem p;
+  if (!r.has("points")) r.fail("points", "a polyline needs points");
+  p.points = r.points("points");
+  if (p.points.empty()) r.fail("points", "empty polyline");
+  p.closed = r.boolean("closed", false);
+  p.pen.color = r.color("color", p.pen.color);
+  p.pen.style = r.stroke(p.pen.style);
+  r.finish();
+  return p;
+}
+
+PolygonItem parse_polygon(TableReader& r) {
+  PolygonItem p;
+  if (r.has("points") && r.has("contours")) r.fail("contours", "give either points or contours, not both");
+  if (r.has("points")) {
+    p.contours.push_back(r.points("points"));
+  } else {
+    const toml::node* n = r.node("contours");
+    if (!n || !n->is_array()) r.fail("contours", "a polygon needs points or contours");
+    for (const toml::node& c : *n->as_array()) {
+      std::vector<Vec2> contour;
+      const toml::array* a = c.as_array();
+      if (!a) r.fail_at(c, "contours", "expected an array of contours [[[x, y], ...], ...]");
+      for (const toml::node& e : *a) {
+        const toml::array* pt = e.as_array();
+        if (!pt || pt->size() != 2) r.fail_at(e, "contours", "expected a point [x, y]");
+        auto num = [&](const toml::node& v) -> double {
+          auto d = v.value<double>();
+          if (!d || !std::isfinite(*d)) r.fail_at(v, "contours", "expected a finite number");
+          return *d;
+        };
+        contour.push_back({num(*pt->get(0)), num(*pt->get(1))});
+      }
+      p.contours.push_back(std::move(contour));
+    }
+  }
+  bool any = false;
+  for (const auto& c : p.contours) any = any || !c.empty();
+  if (!any) r.fail(r.has("points") ? "points" : "contours", "empty polygon");
+  p.rule = r.choice("fill_rule", {"nonzero", "evenodd"}, 0) == 0 ? render::FillRule::NonZero : render::FillRule::EvenOdd;
+  p.color = r.color("color", {0, 0, 0, 1});
+  r.finish();
+  return p;
+}
+
+CircleItem parse_circle(TableReader& r) {
+  CircleItem c;
+  auto centre = r.opt_point("center");
+  if (!centre) r.fail("center", "a circle needs center = [x, y]");
+  c.centre = *centre;
+  c.radius = r.positive("radius", 1);
+  c.fill = r.opt_color("fill");
+  if (auto s = r.opt_color("stroke")) {
+    Pen pen;
+    pen.color = *s;
+    pen.style = r.stroke(pen.style);
+    c.stroke = pen;
+  }
+  if (!c.fill && !c.stroke) c.fill = Color{0, 0, 0, 1};
+  r.finish();
+  return c;
+}
+
+render::Marker parse_marker_shape(TableReader& r, std::string_view key, render::Marker fallback) {
+  return static_cast<render::Marker>(
+      r.choice(key, {"circle", "square", "diamond", "cross", "plus"}, static_cast<int>(fallback)));
+}
+
+MarkerItem parse_marker(TableReader& r) {
+  MarkerItem m;
+  if (r.has("at")) {
+    m.points.push_back(*r.opt_point("at"));
+  } else {
+    m.points = r.points("points");
+  }
+  if (m.points.empty()) r.fail("points", "a marker needs at = [x, y] or points = [[x, y], ...]");
+  m.shape = parse_marker_shape(r, "shape", m.shape);
+  m.size = r.positive("size", m.size);
+  m.color = r.color("color", {0, 0, 0, 1});
+  r.finish();
+  return m;
+}
+
+TextItem parse_text(TableReader& r) {
+  TextItem t;
+  auto at = r.opt_point("at");
+  if (!at) r.fail("at", "text needs at = [x, y]");
+  t.at = *at;
+  auto text = r.opt_string("text");
+  if (!text) r.fail("text", "text needs text = \"...\"");
+  t.text = *text;
+  t.font = r.font(t.font);
+  t.anchor = r.anchor(t.anchor);
+  r.finish();
+  return t;
+}
+
+ImageItem parse_image(TableReader& r, const ParseContext& ctx) {
+  ImageItem im;
+  auto at = r.opt_point("at");
+  im.at = at.value_or(Vec2{0, 0});
+  if (auto size = r.opt_point("size")) {
+    if (!(size->x > 0 && size->y > 0)) r.fail("size", "must be positive");
+    im.size = *size;
+    im.has_size = true;
+  }
+  im.raster = parse_raster(r, ctx);
+  r.finish();
+  return im;
+}
+
+}  // namespace
+
+template <class F>
+static void collect(TableReader& r, std::string_view key, std::vector<std::pair<size_t, Item>>& out, F&& make) {
+  int i = 0;
+  for (const toml::table* t : r.tables(key)) {
+    TableReader sub(*t, r.file(), std::string(key) + "[" + std::to_string(i++) + "]");
+    out.emplace_back(t->source().begin.line, make(sub, *t));
+  }
+}
+
+}  // namespace detail
+
+FigureSpec parse_spec(std::string_view text, const std::string& name, const std::string& base_dir) {
+  using namespace detail;
+  toml::table doc;
+  try {
+    doc = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    std::string d(e.description());
+    std::replace(d.begin(), d.end(), '\n', ' ');
+    throw SpecFileError(line_of(name, e.source()) + ": " + d);
+  }
+  ParseContext ctx{name, base_dir};
+  TableReader r(doc, name, "");
+  FigureSpec spec;
+  spec.name = std::filesystem::path(name).stem().string();
+  spec.path = name;
+  spec.title = r.string("title", "");
+  spec.caption = r.string("caption", "");
+  spec.show_title = r.boolean("show_title", true);
+  spec.title_size = r.positive("title_size", spec.title_size);
+  r.number("order", 0);  // gallery order (catalog.cpp reads it)
+  if (auto t = r.tables("canvas"); !t.empty()) {
+    if (t.size() > 1) r.fail("canvas", "only one [canvas] table");
+    TableReader c(*t[0], name, "canvas");
+    spec.canvas = parse_canvas(c);
+  }
+  if (auto t = r.tables("layout"); !t.empty()) {
+    if (t.size() > 1) r.fail("layout", "only one [layout] table");
+    TableReader l(*t[0], name, "layout");
+    spec.layout = parse_layout(l);
+  }
+  std::vector<std::pair<size_t, Item>> items;
+  collect(r, "polyline", items, [](TableReader& s, const toml::table&) { return Item{parse_polyline(s)}; });
+  collect(r, "polygon", items, [](TableReader& s, const toml::table&) { return Item{parse_polygon(s)}; });
+  collect(r, "circle", items, [](TableReader& s, const toml::table&) { return Item{parse_circle(s)}; });
+  collect(r, "marker", items, [](TableReader& s, const toml::table&) { return Item{parse_marker(s)}; });
+  collect(r, "text", items, [](TableReader& s, const toml::table&) { return Item{parse_text(s)}; });
+  collect(r, "image", items, [&](TableReader& s, const toml::table&) { return Item{parse_image(s, ctx)}; });
+  collect(r, "axes", items, [&](TableReader& s, const toml::table& t) { return Item{parse_axes(t, s.path(), ctx)}; });
+  r.finish();
+  std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [line, item] : items) spec.items.push_back(std::move(item));
+
+  // Panels placed in the layout grid must fit in it.
+  int next = 0;
+  for (auto& item : spec.items) {
+    if (auto* ax = std::get_if<AxesSpec>(&item)) {
+      if (!ax->cell && !ax->box) {
+        ax->cell = std::array<int, 2>{next / spec.layout.cols, next % spec.layout.cols};
+        ++next;
+      }
+      if (ax->cell && ((*ax->cell)[0] >= spec.layout.rows || (*ax->cell)[1] >= spec.layout.cols))
+        throw SpecFileError(ax->where + ": axes.cell: [" + std::to_string((*ax->cell)[0]) + ", " +
+                            std::to_string((*ax->cell)[1]) + "] is outside the " + std::to_string(spec.layout.rows) +
+                            "x" + std::to_string(spec.layout.cols) + " layout (add [layout] rows/cols)");
+    }
+  }
+  return spec;
+}
+
+FigureSpec load_spec(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SpecFileError(path + ": cannot read the spec file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  std::string dir = std::filesystem::path(path).parent_path().string();
+  return parse_spec(ss.str(), path, dir.empty() ? "." : dir);
+}
+
+}  // namespace splinefig::figures

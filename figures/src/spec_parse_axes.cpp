@@ -1,0 +1,298 @@
+// The figure spec loader, part 2: [axes] panels and their plot elements (docs/spec.md).
+#include "spec_parse.hpp"
+
+#include <splinefig/figures/palette.hpp>
+
+#include <algorithm>
+
+namespace splinefig::figures::detail {
+namespace {
+
+const Color kGrey = *render::parse_hex_color("#888888");
+
+render::StrokeStyle curve_stroke() {
+  render::StrokeStyle s;
+  s.width = 2;
+  s.join = render::Join::Round;
+  s.cap = render::Cap::Round;
+  return s;
+}
+
+void parse_axis(TableReader& r, char name, AxisSpec& axis) {
+  const std::string p(1, name);
+  if (r.has(p + "_range")) {
+    auto v = r.numbers(p + "_range");
+    if (v.size() != 2) r.fail(p + "_range", "expected [" + p + "0, " + p + "1]");
+    if (v[0] == v[1]) r.fail(p + "_range", p + "0 = " + p + "1 (the axis would have no extent)");
+    axis.range = std::array<double, 2>{v[0], v[1]};
+  }
+  axis.scale = static_cast<Scale>(r.choice(p + "_scale", {"linear", "log", "db"}, 0));
+  if (axis.scale == Scale::Log && axis.range && ((*axis.range)[0] <= 0 || (*axis.range)[1] <= 0))
+    r.fail(p + "_range", "a log axis needs a positive range");
+  axis.label = r.string(p + "_label", "");
+  if (r.has(p + "_ticks")) {
+    const toml::node* n = r.node(p + "_ticks");
+    if (auto b = n->as_boolean()) {
+      if (!b->get()) axis.ticks = std::vector<double>{};
+    } else {
+      axis.ticks = r.numbers(p + "_ticks");
+    }
+  }
+  axis.tick_labels = r.strings(p + "_tick_labels");
+  if (!axis.tick_labels.empty() && (!axis.ticks || axis.ticks->size() != axis.tick_labels.size()))
+    r.fail(p + "_tick_labels", "needs explicit " + p + "_ticks of the same length");
+  if (auto s = r.opt_number(p + "_tick_step")) {
+    if (!(*s > 0)) r.fail(p + "_tick_step", "must be positive");
+    axis.tick_step = *s;
+  }
+  axis.marks = r.numbers(p + "_marks");
+}
+
+std::vector<Vec2> xy_data(TableReader& r, bool required, const char* what) {
+  std::vector<Vec2> pts;
+  if (r.has("points")) {
+    if (r.has("x") || r.has("y")) r.fail("points", "give either points or x and y, not both");
+    pts = r.points("points");
+  } else if (r.has("x") || r.has("y")) {
+    auto x = r.numbers("x");
+    auto y = r.numbers("y");
+    if (!r.has("y")) r.fail("x", "x without y");
+    if (!r.has("x")) r.fail("y", "y without x");
+    if (x.size() != y.size())
+      r.fail("y", "x has " + std::to_string(x.size()) + " values but y has " + std::to_string(y.size()));
+    for (size_t i = 0; i < x.size(); ++i) pts.push_back({x[i], y[i]});
+  }
+  if (required && pts.empty()) r.fail(r.has("x") ? "x" : "points", std::string(what) + " without data (give points or x and y)");
+  return pts;
+}
+
+CurveElement parse_curve(TableReader& r) {
+  CurveElement c;
+  c.knots = r.points("knots");
+  if (c.knots.empty()) r.fail("knots", "a curve needs knots = [[x, y], ...]");
+  c.basis_spec = r.string("basis", "catmull-rom");
+  c.basis = checked_basis(r, "basis", c.basis_spec);
+  c.ends = static_cast<Ends>(r.choice("ends", {"open", "double", "closed"}, 0));
+  size_t need = min_knots(c.basis, c.ends);
+  if (c.knots.size() < need)
+    r.fail("knots", std::to_string(c.knots.size()) + " knots are too few for one piece of this curve with " +
+                        to_string(c.ends) + " ends (need " + std::to_string(need) + ")");
+  c.marks = r.integer("marks", 0, 0, 100000);
+  c.marks_by_arclength = r.choice("mark_spacing", {"parameter", "arclength"}, 0) == 1;
+  c.mark_size = r.positive("mark_size", c.mark_size);
+  c.mark_color = r.opt_color("mark_color");
+  c.color = r.opt_color("color");
+  c.style = r.stroke(curve_stroke());
+  c.label = parse_labelling(r);
+  c.show_knots = r.boolean("show_knots", false);
+  c.knot_size = r.positive("knot_size", c.knot_size);
+  return c;
+}
+
+KernelElement parse_kernel(TableReader& r) {
+  KernelElement k;
+  k.basis_spec = r.string("basis", "");
+  if (k.basis_spec.empty()) r.fail("basis", "a kernel needs basis = \"SPEC\"");
+  k.basis = checked_basis(r, "basis", k.basis_spec);
+  if (r.has("range")) {
+    auto v = r.numbers("range");
+    if (v.size() != 2 || !(v[0] < v[1])) r.fail("range", "expected [s0, s1] with s0 < s1");
+    k.range = std::array<double, 2>{v[0], v[1]};
+  }
+  k.color = r.opt_color("color");
+  k.piece_colors = r.colors("colors");
+  k.piece_labels = r.strings("labels");
+  size_t pieces = static_cast<size_t>(k.basis.order());
+  if (!k.piece_colors.empty() && k.piece_colors.size() != pieces)
+    r.fail("colors", "the kernel has " + std::to_string(pieces) + " pieces, " + std::to_string(k.piece_colors.size()) + " colours given");
+  if (!k.piece_labels.empty() && k.piece_labels.size() != pieces)
+    r.fail("labels", "the kernel has " + std::to_string(pieces) + " pieces, " + std::to_string(k.piece_labels.size()) + " labels given");
+  if (k.color && !k.piece_colors.empty()) r.fail("colors", "give either color or colors, not both");
+  k.scale = r.number("scale", 1);
+  k.style = r.stroke(curve_stroke());
+  k.label = parse_labelling(r);
+  k.show_knots = r.boolean("show_knots", false);
+  k.knot_size = r.positive("knot_size", k.knot_size);
+  return k;
+}
+
+enum class SeriesKind { Series, Polygon, Markers };
+
+SeriesElement parse_series(TableReader& r, SeriesKind kind) {
+  SeriesElement s;
+  const char* what = kind == SeriesKind::Polygon ? "a control polygon" : kind == SeriesKind::Markers ? "markers" : "a series";
+  s.points = xy_data(r, true, what);
+  render::StrokeStyle st = curve_stroke();
+  if (kind == SeriesKind::Polygon) {
+    st.width = 1;
+    st.join = render::Join::Miter;
+    st.cap = render::Cap::Butt;
+    st.dashes = {5, 3};
+    s.style = SeriesStyle::LineMarkers;
+    s.color = kGrey;
+    s.marker_size = 6;
+  } else if (kind == SeriesKind::Markers) {
+    s.style = SeriesStyle::Markers;
+  }
+  s.style = static_cast<SeriesStyle>(
+      r.choice("style", {"line", "markers", "line+markers", "steps", "stems"}, static_cast<int>(s.style)));
+  s.closed = r.boolean("closed", false);
+  if (auto c = r.opt_color("color")) s.color = c;
+  s.style_stroke = r.stroke(st);
+  s.marker = static_cast<render::Marker>(
+      r.choice("marker", {"circle", "square", "diamond", "cross", "plus"}, static_cast<int>(s.marker)));
+  s.marker_size = r.positive("marker_size", s.marker_size);
+  s.marker_color = r.opt_color("marker_color");
+  s.label = parse_labelling(r);
+  return s;
+}
+
+FillElement parse_fill(TableReader& r) {
+  FillElement f;
+  if (r.has("points")) {
+    f.polygon = true;
+    f.upper = r.points("points");
+    if (f.upper.size() < 3) r.fail("points", "a filled polygon needs at least 3 points");
+  } else {
+    auto x = r.numbers("x");
+    auto y = r.numbers("y");
+    if (x.empty()) r.fail("x", "a fill without data (give points, or x and y)");
+    if (x.size() != y.size()) r.fail("y", "x and y differ in length");
+    std::vector<double> y2;
+    if (r.has("y2")) {
+      y2 = r.numbers("y2");
+      if (y2.size() != x.size()) r.fail("y2", "x and y2 differ in length");
+    } else {
+      y2.assign(x.size(), r.number("baseline", 0));
+    }
+    for (size_t i = 0; i < x.size(); ++i) {
+      f.upper.push_back({x[i], y[i]});
+      f.lower.push_back({x[i], y2[i]});
+    }
+  }
+  f.color = r.color("color", *render::parse_hex_color("#1f77b440"));
+  f.label = parse_labelling(r);
+  return f;
+}
+
+TextElement parse_text_element(TableReader& r) {
+  TextElement t;
+  auto at = r.opt_point("at");
+  if (!at) r.fail("at", "text needs at = [x, y] (data)");
+  t.at = *at;
+  auto text = r.opt_string("text");
+  if (!text) r.fail("text", "text needs text = \"...\"");
+  t.text = *text;
+  t.offset = r.opt_point("offset").value_or(Vec2{0, 0});
+  t.font = r.font(t.font);
+  t.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
+  return t;
+}
+
+AnnotationElement parse_annotation(TableReader& r) {
+  AnnotationElement a;
+  auto at = r.opt_point("at");
+  auto to = r.opt_point("to");
+  if (!at) r.fail("at", "an annotation needs at = [x, y] (the text, data)");
+  if (!to) r.fail("to", "an annotation needs to = [x, y] (the arrow's tip, data)");
+  a.at = *at;
+  a.to = *to;
+  auto text = r.opt_string("text");
+  if (!text) r.fail("text", "an annotation needs text = \"...\"");
+  a.text = *text;
+  a.font = r.font(a.font);
+  a.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
+  a.arrow_color = r.color("arrow_color", a.font.color);
+  a.arrow_width = r.positive("arrow_width", 1);
+  return a;
+}
+
+RuleElement parse_rule(TableReader& r, bool horizontal) {
+  RuleElement e;
+  e.horizontal = horizontal;
+  const char* key = horizontal ? "y" : "x";
+  auto v = r.opt_number(key);
+  if (!v) r.fail(key, std::string(horizontal ? "an hline needs y = VALUE" : "a vline needs x = VALUE"));
+  e.value = *v;
+  e.pen.color = r.color("color", kGrey);
+  render::StrokeStyle st;
+  st.width = 1;
+  e.pen.style = r.stroke(st);
+  e.label = parse_labelling(r);
+  return e;
+}
+
+ImageElement parse_image_element(TableReader& r, const ParseContext& ctx) {
+  ImageElement im;
+  auto v = r.numbers("extent");
+  if (v.size() != 4 || v[0] == v[1] || v[2] == v[3]) r.fail("extent", "expected extent = [x0, x1, y0, y1] with x0 != x1, y0 != y1");
+  im.extent = {v[0], v[1], v[2], v[3]};
+  im.raster = parse_raster(r, ctx);
+  return im;
+}
+
+}  // namespace
+
+AxesSpec parse_axes(const toml::table& table, const std::string& path, const ParseContext& ctx) {
+  TableReader r(table, ctx.file, path);
+  AxesSpec ax;
+  ax.where = r.where();
+  parse_axis(r, 'x', ax.x);
+  parse_axis(r, 'y', ax.y);
+  if (ax.x.scale == Scale::Decibel) r.fail("x_scale", "db is for the y axis");
+  ax.title = r.string("title", "");
+  ax.grid = r.boolean("grid", false);
+  ax.equal_aspect = r.choice("aspect", {"auto", "equal"}, 0) == 1;
+  ax.zero_line = r.boolean("zero_line", false);
+  ax.frame = static_cast<Frame>(r.choice("frame", {"box", "left-bottom", "none"}, 1));
+  ax.legend = static_cast<LegendPlace>(r.choice(
+      "legend", {"auto", "none", "upper left", "upper right", "lower left", "lower right", "upper center", "lower center"}, 0));
+  ax.legend_title = r.string("legend_title", "");
+  ax.palette = r.string("palette", ax.palette);
+  if (!palette_known(ax.palette)) r.fail("palette", "unknown palette \"" + ax.palette + "\" (viridis | tab10 | grey)");
+  if (r.has("cell")) {
+    auto v = r.numbers("cell");
+    if (v.size() != 2 || v[0] < 0 || v[1] < 0 || v[0] != static_cast<int>(v[0]) || v[1] != static_cast<int>(v[1]))
+      r.fail("cell", "expected [row, col], non-negative integers");
+    ax.cell = std::array<int, 2>{static_cast<int>(v[0]), static_cast<int>(v[1])};
+  }
+  if (r.has("box")) {
+    auto v = r.numbers("box");
+    if (v.size() != 4 || !(v[0] < v[2]) || !(v[1] < v[3])) r.fail("box", "expected [left, top, right, bottom] with left < right, top < bottom");
+    ax.box = std::array<double, 4>{v[0], v[1], v[2], v[3]};
+  }
+
+  std::vector<std::pair<size_t, PlotElement>> elements;
+  auto each = [&](std::string_view key, auto&& make) {
+    int i = 0;
+    for (const toml::table* t : r.tables(key)) {
+      TableReader sub(*t, ctx.file, r.key_path(key) + "[" + std::to_string(i++) + "]");
+      elements.emplace_back(t->source().begin.line, PlotElement{make(sub)});
+      sub.finish();
+    }
+  };
+  each("curve", [](TableReader& s) { return parse_curve(s); });
+  each("kernel", [](TableReader& s) { return parse_kernel(s); });
+  each("series", [](TableReader& s) { return parse_series(s, SeriesKind::Series); });
+  each("polygon", [](TableReader& s) { return parse_series(s, SeriesKind::Polygon); });
+  each("markers", [](TableReader& s) { return parse_series(s, SeriesKind::Markers); });
+  each("fill", [](TableReader& s) { return parse_fill(s); });
+  each("text", [](TableReader& s) { return parse_text_element(s); });
+  each("annotation", [](TableReader& s) { return parse_annotation(s); });
+  each("hline", [](TableReader& s) { return parse_rule(s, true); });
+  each("vline", [](TableReader& s) { return parse_rule(s, false); });
+  each("image", [&](TableReader& s) { return parse_image_element(s, ctx); });
+  r.finish();
+  std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [line, e] : elements) ax.elements.push_back(std::move(e));
+
+  if (ax.y.scale == Scale::Log) {
+    for (const auto& e : ax.elements)
+      if (const auto* s = std::get_if<SeriesElement>(&e))
+        for (const auto& p : s->points)
+          if (!(p.y > 0)) r.fail("series", "a log y axis needs positive y data");
+  }
+  return ax;
+}
+
+}  // namespace splinefig::figures::detail

@@ -1,0 +1,287 @@
+// Checked access to TOML tables of figure specs (see toml_reader.hpp).
+#include "toml_reader.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace splinefig::figures::detail {
+
+namespace {
+
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+const char* type_name(toml::node_type t) {
+  switch (t) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::date: return "a date";
+    case toml::node_type::time: return "a time";
+    case toml::node_type::date_time: return "a date-time";
+    default: return "nothing";
+  }
+}
+
+}  // namespace
+
+std::string line_of(const std::string& file, const toml::source_region& where) {
+  if (where.begin.line == 0) return file;
+  return file + ":" + std::to_string(where.begin.line);
+}
+
+TableReader::TableReader(const toml::table& table, std::string file, std::string path)
+    : table_(table), file_(std::move(file)), path_(std::move(path)) {}
+
+std::string TableReader::where() const { return line_of(file_, table_.source()); }
+
+std::string TableReader::key_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+}
+
+void TableReader::fail(std::string_view key, const std::string& message) const {
+  if (const toml::node* n = table_.get(key)) fail_at(*n, key, message);
+  throw SpecFileError(where() + ": " + (key.empty() ? path_ : key_path(key)) + ": " + message);
+}
+
+void TableReader::fail_at(const toml::node& node, std::string_view key, const std::string& message) const {
+  std::string loc = line_of(file_, node.source());
+  if (node.source().begin.line == 0) loc = where();
+  throw SpecFileError(loc + ": " + key_path(key) + ": " + message);
+}
+
+bool TableReader::has(std::string_view key) const { return table_.contains(key); }
+
+const toml::node* TableReader::node(std::string_view key) {
+  used_.insert(std::string(key));
+  return table_.get(key);
+}
+
+double TableReader::to_number(const toml::node& n, std::string_view key) const {
+  double v;
+  if (auto i = n.as_integer()) {
+    v = static_cast<double>(i->get());
+  } else if (auto f = n.as_floating_point()) {
+    v = f->get();
+  } else {
+    fail_at(n, key, std::string("expected a number, found ") + type_name(n.type()));
+  }
+  if (!std::isfinite(v)) fail_at(n, key, "expected a finite number, found " + std::string(std::isnan(v) ? "nan" : "inf"));
+  return v;
+}
+
+Vec2 TableReader::to_point(const toml::node& n, std::string_view key) const {
+  const toml::array* a = n.as_array();
+  if (!a || a->size() != 2) fail_at(n, key, "expected a point [x, y]");
+  return {to_number(*a->get(0), key), to_number(*a->get(1), key)};
+}
+
+std::optional<double> TableReader::opt_number(std::string_view key) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  return to_number(*n, key);
+}
+
+double TableReader::number(std::string_view key, double fallback) { return opt_number(key).value_or(fallback); }
+
+double TableReader::positive(std::string_view key, double fallback) {
+  double v = number(key, fallback);
+  if (!(v > 0)) fail(key, "must be positive, found " + shortest(v));
+  return v;
+}
+
+double TableReader::non_negative(std::string_view key, double fallback) {
+  double v = number(key, fallback);
+  if (v < 0) fail(key, "must not be negative, found " + shortest(v));
+  return v;
+}
+
+int TableReader::integer(std::string_view key, int fallback, int lo, int hi) {
+  const toml::node* n = node(key);
+  if (!n) return fallback;
+  auto i = n->as_integer();
+  if (!i) fail_at(*n, key, "expected an integer");
+  if (i->get() < lo || i->get() > hi)
+    fail_at(*n, key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], found " + std::to_string(i->get()));
+  return static_cast<int>(i->get());
+}
+
+bool TableReader::boolean(std::string_view key, bool fallback) {
+  const toml::node* n = node(key);
+  if (!n) return fallback;
+  auto b = n->as_boolean();
+  if (!b) fail_at(*n, key, "expected true or false");
+  return b->get();
+}
+
+std::optional<std::string> TableReader::opt_string(std::string_view key) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  auto s = n->as_string();
+  if (!s) fail_at(*n, key, "expected a string");
+  return s->get();
+}
+
+std::string TableReader::string(std::string_view key, const std::string& fallback) {
+  return opt_string(key).value_or(fallback);
+}
+
+int TableReader::choice(std::string_view key, const std::vector<std::string>& choices, int fallback) {
+  auto s = opt_string(key);
+  if (!s) return fallback;
+  for (size_t i = 0; i < choices.size(); ++i)
+    if (*s == choices[i]) return static_cast<int>(i);
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : " | ") + c;
+  fail(key, "unknown value \"" + *s + "\" (expected " + list + ")");
+}
+
+static std::optional<Color> hex(const std::string& s) { return render::parse_hex_color(s); }
+
+std::optional<Color> TableReader::opt_color(std::string_view key) {
+  auto s = opt_string(key);
+  if (!s) return std::nullopt;
+  auto c = hex(*s);
+  if (!c) fail(key, "\"" + *s + "\" is not a hex colour \"#rrggbb\" or \"#rrggbbaa\"");
+  return c;
+}
+
+Color TableReader::color(std::string_view key, Color fallback) { return opt_color(key).value_or(fallback); }
+
+std::vector<Color> TableReader::colors(std::string_view key) {
+  std::vector<Color> out;
+  for (const std::string& s : strings(key)) {
+    auto c = hex(s);
+    if (!c) fail(key, "\"" + s + "\" is not a hex colour \"#rrggbb\" or \"#rrggbbaa\"");
+    out.push_back(*c);
+  }
+  return out;
+}
+
+std::vector<double> TableReader::numbers(std::string_view key) {
+  std::vector<double> out;
+  const toml::node* n = node(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail_at(*n, key, "expected an array of numbers");
+  for (const toml::node& e : *a) out.push_back(to_number(e, key));
+  return out;
+}
+
+std::vector<std::string> TableReader::strings(std::string_view key) {
+  std::vector<std::string> out;
+  const toml::node* n = node(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail_at(*n, key, "expected an array of strings");
+  for (const toml::node& e : *a) {
+    auto s = e.as_string();
+    if (!s) fail_at(e, key, "expected an array of strings");
+    out.push_back(s->get());
+  }
+  return out;
+}
+
+std::optional<Vec2> TableReader::opt_point(std::string_view key) {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  return to_point(*n, key);
+}
+
+std::vector<Vec2> TableReader::points(std::string_view key) {
+  std::vector<Vec2> out;
+  const toml::node* n = node(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail_at(*n, key, "expected an array of points [[x, y], ...]");
+  for (const toml::node& e : *a) out.push_back(to_point(e, key));
+  return out;
+}
+
+std::vector<std::vector<double>> TableReader::matrix(std::string_view key) {
+  std::vector<std::vector<double>> out;
+  const toml::node* n = node(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail_at(*n, key, "expected an array of rows");
+  for (const toml::node& row : *a) {
+    const toml::array* r = row.as_array();
+    if (!r) fail_at(row, key, "expected an array of rows");
+    std::vector<double> v;
+    for (const toml::node& e : *r) v.push_back(to_number(e, key));
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+std::vector<const toml::table*> TableReader::tables(std::string_view key) {
+  std::vector<const toml::table*> out;
+  const toml::node* n = node(key);
+  if (!n) return out;
+  if (const toml::table* t = n->as_table()) {
+    out.push_back(t);
+  } else if (const toml::array* a = n->as_array()) {
+    for (const toml::node& e : *a) {
+      const toml::table* t = e.as_table();
+      if (!t) fail_at(e, key, "expected a table [[" + key_path(key) + "]]");
+      out.push_back(t);
+    }
+  } else {
+    fail_at(*n, key, "expected a table [" + key_path(key) + "]");
+  }
+  return out;
+}
+
+void TableReader::finish() const {
+  for (auto&& [k, v] : table_) {
+    if (used_.count(k.str())) continue;
+    std::string loc = line_of(file_, k.source().begin.line ? k.source() : v.source());
+    throw SpecFileError(loc + ": " + key_path(k.str()) + ": unknown key");
+  }
+}
+
+render::StrokeStyle TableReader::stroke(render::StrokeStyle s) {
+  s.width = non_negative("width", s.width);
+  s.join = static_cast<render::Join>(choice("join", {"miter", "round", "bevel"}, static_cast<int>(s.join)));
+  s.miter_limit = number("miter_limit", s.miter_limit);
+  if (s.miter_limit < 1) fail("miter_limit", "must be >= 1");
+  s.cap = static_cast<render::Cap>(choice("cap", {"butt", "round", "square"}, static_cast<int>(s.cap)));
+  if (has("dash")) {
+    s.dashes = numbers("dash");
+    double total = 0;
+    for (double d : s.dashes) {
+      if (d < 0) fail("dash", "dash lengths must not be negative");
+      total += d;
+    }
+    if (!s.dashes.empty() && !(total > 0)) fail("dash", "dash lengths must not all be zero");
+    if (s.dashes.size() % 2) {  // SVG: an odd list repeats to make it even
+      auto copy = s.dashes;
+      s.dashes.insert(s.dashes.end(), copy.begin(), copy.end());
+    }
+  }
+  s.dash_offset = number("dash_offset", s.dash_offset);
+  return s;
+}
+
+Font TableReader::font(Font f, std::string_view size_key, std::string_view color_key) {
+  f.size = positive(size_key, f.size);
+  f.color = color(color_key, f.color);
+  f.bold = boolean("bold", f.bold);
+  return f;
+}
+
+TextAnchor TableReader::anchor(TextAnchor a) {
+  a.halign = static_cast<render::HAlign>(choice("align", {"left", "center", "right"}, static_cast<int>(a.halign)));
+  a.valign = static_cast<render::VAlign>(
+      choice("valign", {"baseline", "middle", "top", "bottom"}, static_cast<int>(a.valign)));
+  return a;
+}
+
+}  // namespace splinefig::figures::detail

@@ -1,0 +1,72 @@
+#pragma once
+// Typed, checked access to one TOML table of a figure spec. Every getter validates its
+// value and throws SpecFileError "FILE:LINE: KEY: message" on anything wrong; finish()
+// rejects the keys nobody asked for (typos such as `colour`), so no key is silently ignored.
+#include <splinefig/figures/spec.hpp>
+
+#include <toml++/toml.h>
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace splinefig::figures::detail {
+
+class TableReader {
+ public:
+  // `file` names the spec in messages; `path` is the table's key path ("axes[0].curve[2]").
+  TableReader(const toml::table& table, std::string file, std::string path);
+
+  bool has(std::string_view key) const;
+  const toml::node* node(std::string_view key);  // marks the key as used
+
+  double number(std::string_view key, double fallback);
+  std::optional<double> opt_number(std::string_view key);
+  double positive(std::string_view key, double fallback);      // > 0
+  double non_negative(std::string_view key, double fallback);  // >= 0
+  int integer(std::string_view key, int fallback, int lo, int hi);
+  bool boolean(std::string_view key, bool fallback);
+  std::string string(std::string_view key, const std::string& fallback);
+  std::optional<std::string> opt_string(std::string_view key);
+  // One of `choices`; returns its index.
+  int choice(std::string_view key, const std::vector<std::string>& choices, int fallback);
+  Color color(std::string_view key, Color fallback);
+  std::optional<Color> opt_color(std::string_view key);
+  std::vector<Color> colors(std::string_view key);
+  std::vector<double> numbers(std::string_view key);  // [] if absent
+  std::vector<std::string> strings(std::string_view key);
+  std::optional<Vec2> opt_point(std::string_view key);
+  std::vector<Vec2> points(std::string_view key);  // [[x,y], ...]; [] if absent
+  std::vector<std::vector<double>> matrix(std::string_view key);  // rows of numbers
+
+  // Sub-tables: [key] (at most one) or [[key]] (any number), in document order.
+  std::vector<const toml::table*> tables(std::string_view key);
+
+  // Throws for the first key that was never read.
+  void finish() const;
+
+  [[noreturn]] void fail(std::string_view key, const std::string& message) const;
+  [[noreturn]] void fail_at(const toml::node& node, std::string_view key, const std::string& message) const;
+  std::string where() const;  // "FILE:LINE" of the table
+  std::string key_path(std::string_view key) const;
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+
+  // The stroke keys shared by every stroked element: width, join, miter_limit, cap, dash,
+  // dash_offset. `width` must be >= 0 (0 draws nothing).
+  render::StrokeStyle stroke(render::StrokeStyle fallback);
+  Font font(Font fallback, std::string_view size_key = "size", std::string_view color_key = "color");
+  TextAnchor anchor(TextAnchor fallback);
+
+ private:
+  double to_number(const toml::node& n, std::string_view key) const;
+  Vec2 to_point(const toml::node& n, std::string_view key) const;
+  const toml::table& table_;
+  std::string file_, path_;
+  std::set<std::string, std::less<>> used_;
+};
+
+std::string line_of(const std::string& file, const toml::source_region& where);
+
+}  // namespace splinefig::figures::detail
