@@ -126,21 +126,21 @@ TEST_CASE("interp curve: n*grain+1 rows that read back to the library's doubles"
   CHECK(parse(z.out).coords == interpolate_clamped(parse("0,0\n1,1\n3,0\n"), zero, zero).control.coords);
 }
 
-TEST_CASE("interp errors: one line naming the input, non-zero exit, nothing on stdout") {
+// Each run of the binary costs a process start (it links the image libraries), so each error
+// case below checks something different.
+TEST_CASE("interp errors in the data: one line naming it, non-zero exit, nothing on stdout") {
   expect_error("interp", "", "0 data points");
   expect_error("interp", "1,2\n", "needs at least 2");
   expect_error("interp --ends periodic", "1,2\n3,4\n", "needs at least 3");
   expect_error("interp --ends periodic", "1,2\n3,4\n5,6\n", "repeat the first");
   expect_error("interp", "1,2\n3,x\n", "line 2, field 2");
-  expect_error("interp", "1,2\n3,4,5\n", "line 2");
-  expect_error("interp", "1,2\nnan,4\n", "line 2");
+}
+
+TEST_CASE("interp errors in the flags: one line naming the flag") {
   expect_error("interp --ends sideways", worked, "--ends");
-  expect_error("interp --output svg", worked, "--output");
   expect_error("interp --grain 0", worked, "--grain");
-  expect_error("interp --grain 1e9", worked, "--grain");
   expect_error("interp --ends clamped --start-velocity 1", worked, "--start-velocity");
-  expect_error("interp --ends clamped --end-velocity 1,y", worked, "--end-velocity");
-  expect_error("interp --start-velocity 1,2", worked, "only to --ends clamped");
+  expect_error("interp --end-velocity 1,2", worked, "only to --ends clamped");
 }
 
 TEST_CASE("eval --knot-spacing and --betas use the spaced and locally shaped curves") {
@@ -157,9 +157,13 @@ TEST_CASE("eval --knot-spacing and --betas use the spaced and locally shaped cur
   std::vector<ShapeParameters> s(7);
   s[2].b1 = 5, s[3].b1 = 10;
   CHECK(parse(b.out).coords == sample_local_betas(make_curve(beta(1, 0), K, Ends::open), s, 4).coords);
+}
 
+TEST_CASE("eval --knot-spacing and --betas errors name the flag or the file") {
+  const std::string knots = "0,0\n1,2\n2,0\n3,2\n4,0\n5,2\n6,0\n";
+  const fs::path betas = scratch() / "betas.csv";
+  std::ofstream(betas) << "1,0\n1,0\n5,0\n10,0\n1,0\n1,0\n1,0\n";
   expect_error("eval --basis bspline --knot-spacing chordal", knots, "Catmull-Rom");
-  expect_error("eval --basis catmull-rom --knot-spacing arc", knots, "--knot-spacing");
   expect_error("eval --basis bspline --betas '" + betas.string() + "'", knots, "--basis beta");
   expect_error("eval --basis beta --betas /nonexistent/betas.csv", knots, "cannot open");
   std::ofstream(betas) << "1,0\n1,0\n";
