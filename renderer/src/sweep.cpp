@@ -14,7 +14,7 @@ void StripSweep::crossings(const Span& a, const Span& b) {
   double y = lo;
   double d = x_on(a, ka, y) - x_on(b, kb, y);
   int last_sign = d > 0 ? 1 : (d < 0 ? -1 : 0);
-  double y_prev = y, d_prev = d, y_zero = y;
+  double y_prev = y, d_prev = d;
   while (y < hi) {
     // next sample: the lowest vertex height above y of either chain, or hi
     while (ka + 1 < la && v[ka + 1].y <= y) ++ka;
@@ -25,15 +25,17 @@ void StripSweep::crossings(const Span& a, const Span& b) {
     y = yn;
     double dn = x_at(ka, y) - x_at(kb, y);
     int s = dn > 0 ? 1 : (dn < 0 ? -1 : 0);
-    if (s == 0) {
-      if (d_prev != 0) y_zero = y;
-    } else {
-      if (last_sign != 0 && s != last_sign) {
-        double yc = d_prev != 0 ? y_prev + (y - y_prev) * (d_prev / (d_prev - dn)) : y_zero;
+    // Every change of order is an event: a crossing (interpolated), and the two ends of a
+    // stretch where the chains coincide (e.g. both projected onto the clip box's side).
+    if (s != last_sign) {
+      if (s != 0 && last_sign != 0) {
+        double yc = y_prev + (y - y_prev) * (d_prev / (d_prev - dn));
         events_.push_back(std::clamp(yc, y_prev, y));
+      } else {
+        events_.push_back(s == 0 ? y : y_prev);
       }
-      last_sign = s;
     }
+    last_sign = s;
     y_prev = y;
     d_prev = dn;
   }
