@@ -3,6 +3,7 @@
 #include "csv.hpp"
 
 #include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/filter_analysis.hpp>
 
 #include <cmath>
 
@@ -13,11 +14,47 @@ using splinefig::cli::Failure;
 
 struct Options {
   std::string basis, from = "-2", to = "2", step = "0.015625";
+  bool response = false, report = false;  // filter analysis (filter_analysis.hpp)
+  bool range_given = false;               // --from/--to/--step given: they apply to f too
 };
 
 constexpr double max_rows = 1e8;
 
+// --report: the filter's numbers; --response: f,|K(f)| lines (f in cycles per sample, by default
+// 0 to 2 in steps of 1/256). Any basis spec or box, tent, lanczos3.
+int run_filter(const Options& o) {
+  Filter f;
+  try {
+    f = parse_filter(o.basis);
+  } catch (const SpecError& e) {
+    throw Failure(std::string("--basis: ") + e.what());
+  }
+  if (o.report) {
+    cli::write_stdout(report_text(analyse(f)));
+    return 0;
+  }
+  const double f0 = o.range_given ? cli::parse_number(o.from, "--from") : 0.0;
+  const double f1 = o.range_given ? cli::parse_number(o.to, "--to") : 2.0;
+  const double step = o.range_given ? cli::parse_number(o.step, "--step") : 1.0 / 256;
+  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
+  if (f1 < f0) throw Failure("--to " + o.to + " is less than --from " + o.from);
+  const double span = (f1 - f0) / step;
+  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
+  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
+  std::string text;
+  for (long long i = 0; i < rows; ++i) {
+    const double fr = f0 + static_cast<double>(i) * step;
+    cli::append_number(text, fr);
+    text += ',';
+    cli::append_number(text, response(f, fr));
+    text += '\n';
+  }
+  cli::write_stdout(text);
+  return 0;
+}
+
 int run(const Options& o) {
+  if (o.response || o.report) return run_filter(o);
   Basis b;
   try {
     b = parse_basis(o.basis);
@@ -54,8 +91,17 @@ const splinefig::cli::Registration reg{
       app.add_option("--from", o->from, "First x (default -2)");
       app.add_option("--to", o->to, "Last x (default 2)");
       app.add_option("--step", o->step, "Step in x (default 1/64)");
+      app.add_flag("--response", o->response,
+                   "Write f,|K(f)| lines instead (f in cycles/sample; default 0 to 2 step 1/256, "
+                   "or --from/--to/--step); also box, tent, lanczos3");
+      app.add_flag("--report", o->report,
+                   "Print the filter's integral, continuity, droop, leakage, step response and "
+                   "Mitchell-Netravali B,C");
       app.footer("k is the basis function of CONTRACT.md: a curve is X(t) = sum_j x[j] k(t - j).");
-      return splinefig::cli::Runner([o] { return run(*o); });
+      return splinefig::cli::Runner([o, &app] {
+        o->range_given = app.count("--from") + app.count("--to") + app.count("--step") > 0;
+        return run(*o);
+      });
     }};
 
 }  // namespace
