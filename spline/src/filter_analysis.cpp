@@ -97,6 +97,7 @@ std::vector<std::complex<double>> moments(double t, int n) {
 }
 
 std::string fmt(double v) {
+  if (v == 0) v = 0;  // no "-0"
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.10g", v);
   return buf;
