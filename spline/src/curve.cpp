@@ -154,6 +154,21 @@ void sample_generic(const double* ctrl, std::size_t pieces, int grain, int order
   }
 }
 
+// Compiled twice where the compiler can (x86-64 GCC/Clang): for AVX2 and for the baseline,
+// chosen at load time. No FMA contraction either way (ISO C++ mode), so both give the
+// same bits.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("avx2", "default"), flatten))
+#endif
+void sample_pieces(const double* ctrl, std::size_t pieces, int grain, int order, int dim, const double* E,
+                   double* o) {
+  if (order == 4 && dim == 1) sample_cubic<1>(ctrl, pieces, grain, E, o);
+  else if (order == 4 && dim == 2) sample_cubic<2>(ctrl, pieces, grain, E, o);
+  else if (order == 4 && dim == 3) sample_cubic<3>(ctrl, pieces, grain, E, o);
+  else if (order == 4 && dim == 4) sample_cubic<4>(ctrl, pieces, grain, E, o);
+  else sample_generic(ctrl, pieces, grain, order, dim, E, o);
+}
+
 }  // namespace
 
 void sample_into(const Curve& c, int grain, int derivative, std::span<double> out) {
@@ -173,11 +188,7 @@ void sample_into(const Curve& c, int grain, int derivative, std::span<double> ou
   const std::size_t pieces = c.segments();
   const double* ctrl = c.control.coords.data();
   double* o = out.data();
-  if (order == 4 && dim == 1) sample_cubic<1>(ctrl, pieces, grain, E.data(), o);
-  else if (order == 4 && dim == 2) sample_cubic<2>(ctrl, pieces, grain, E.data(), o);
-  else if (order == 4 && dim == 3) sample_cubic<3>(ctrl, pieces, grain, E.data(), o);
-  else if (order == 4 && dim == 4) sample_cubic<4>(ctrl, pieces, grain, E.data(), o);
-  else sample_generic(ctrl, pieces, grain, order, dim, E.data(), o);
+  sample_pieces(ctrl, pieces, grain, order, dim, E.data(), o);
 
   // The final point: u = 1 of the last piece; for a closed curve's position, the first point.
   double* last = o + pieces * K;
