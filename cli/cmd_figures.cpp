@@ -7,6 +7,7 @@
 #include <splinefig/version.hpp>
 
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -70,6 +71,7 @@ int run(const FiguresArgs& a) {
 
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
+  const std::clock_t cpu_start = std::clock();
   std::vector<fig::FigureInfo> done;
   int failed = 0;
   for (const auto& s : specs) {
@@ -98,8 +100,9 @@ int run(const FiguresArgs& a) {
   fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(done));
   fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(done));
   const double total = std::chrono::duration<double>(clock::now() - start).count();
-  std::printf("%zu figure%s in %.2f s -> %s/index.html\n", done.size(), done.size() == 1 ? "" : "s", total,
-              a.out.c_str());
+  const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+  std::printf("%zu figure%s in %.2f s (%.2f s CPU) -> %s/index.html\n", done.size(), done.size() == 1 ? "" : "s", total,
+              cpu, a.out.c_str());
   if (failed) throw Failure(std::to_string(failed) + " of " + std::to_string(specs.size()) + " figures failed");
   return 0;
 }

@@ -38,7 +38,6 @@ std::string format_number(double v, int decimals) {
   // "-0" and "-0.0" are zero.
   bool zero = s.find_first_not_of("-0.") == std::string::npos;
   if (zero) s.erase(0, s[0] == '-' ? 1 : 0);
-  if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
   return s;
 }
 
@@ -75,15 +74,6 @@ std::vector<Tick> nice_ticks(double lo, double hi, double target, double step) {
   return ticks;
 }
 
-static std::string superscript(int k) {
-  static const char* digits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
-                                 "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
-  std::string s = k < 0 ? "\u207b" : "";
-  std::string d = std::to_string(std::abs(k));
-  for (char c : d) s += digits[c - '0'];
-  return s;
-}
-
 std::vector<Tick> log_ticks(double lo, double hi) {
   if (lo > hi) std::swap(lo, hi);
   int k0 = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));
@@ -93,7 +83,7 @@ std::vector<Tick> log_ticks(double lo, double hi) {
   std::vector<Tick> ticks;
   for (int k = k0; k <= k1; ++k) {
     if ((k - k0) % every) continue;
-    std::string label = k == 0 ? "1" : k == 1 ? "10" : "10" + superscript(k);
+    std::string label = k == 0 ? "1" : k == 1 ? "10" : "10^{" + std::to_string(k) + "}";
     ticks.push_back({std::pow(10.0, k), label});
   }
   return ticks;

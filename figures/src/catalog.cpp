@@ -2,6 +2,7 @@
 #include <splinefig/figures/catalog.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -76,15 +77,9 @@ std::string json_string(const std::string& s) {
 
 std::string json_number(double v) {
   if (!std::isfinite(v)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  // Shortest form that reads back to the same double.
-  for (int p = 1; p <= 17; ++p) {
-    char b2[32];
-    std::snprintf(b2, sizeof b2, "%.*g", p, v);
-    if (std::strtod(b2, nullptr) == v) return b2;
-  }
-  return buf;
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest form that reads back the same
+  return std::string(buf, r.ptr);
 }
 
 const char* scale_name(Scale s) { return s == Scale::Log ? "log" : s == Scale::Decibel ? "db" : "linear"; }

@@ -1,10 +1,15 @@
 // The figure display list and its rendering (see painter.hpp).
 #include "painter.hpp"
 
+#include "rich_text.hpp"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <cmath>
 #include <stdexcept>
 
@@ -42,11 +47,36 @@ render::TextStyle text_style(const Font& f, TextAnchor a, double scale) {
   return t;
 }
 
+namespace {
+
+// Plain-text extent at an output size, in output pixels. FreeType measuring is the
+// costly part of setting a label, and figures repeat their labels, so extents are cached.
+render::TextExtent measure_plain(const std::string& text, double size, bool bold) {
+  static std::mutex mutex;
+  static std::map<std::tuple<std::string, double, bool>, render::TextExtent> cache;
+  auto key = std::make_tuple(text, size, bold);
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = cache.find(key); it != cache.end()) return it->second;
+  }
+  render::TextStyle t;
+  t.size = size;
+  t.font = bold ? "DejaVuSans-Bold" : "DejaVuSans";
+  render::TextExtent e = render::measure_text(text, t);
+  std::lock_guard<std::mutex> lock(mutex);
+  if (cache.size() > 100000) cache.clear();
+  cache[key] = e;
+  return e;
+}
+
+}  // namespace
+
 render::TextExtent Painter::measure(const std::string& s, const Font& f) const {
-  render::TextExtent e = render::measure_text(s, text_style(f, {}, scale_));
-  e.width /= scale_;
-  e.ascent /= scale_;
-  e.descent /= scale_;
+  auto key = std::make_tuple(s, f.size, f.bold);
+  if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+  RichText rt = set_text(s, f.size * scale_, [&](const std::string& t, double size) { return measure_plain(t, size, f.bold); });
+  render::TextExtent e{rt.width / scale_, rt.ascent / scale_, rt.descent / scale_};
+  cache_[key] = e;
   return e;
 }
 
@@ -183,6 +213,23 @@ render::StrokeStyle scaled(render::StrokeStyle st, double s) {
   return st;
 }
 
+// A label set as runs (rich_text.hpp), aligned as a whole, each run on the baseline.
+void draw_text(render::Scene& scene, const TextOp& op, double s) {
+  render::TextStyle style = text_style(op.font, {render::HAlign::Left, render::VAlign::Baseline}, s);
+  RichText rt = set_text(op.text, op.font.size * s,
+                         [&](const std::string& t, double size) { return measure_plain(t, size, op.font.bold); });
+  double x = op.at.x * s, y = op.at.y * s;
+  if (op.anchor.halign == render::HAlign::Center) x -= 0.5 * rt.width;
+  else if (op.anchor.halign == render::HAlign::Right) x -= rt.width;
+  if (op.anchor.valign == render::VAlign::Top) y += rt.ascent;
+  else if (op.anchor.valign == render::VAlign::Middle) y += 0.5 * (rt.ascent - rt.descent);
+  else if (op.anchor.valign == render::VAlign::Bottom) y -= rt.descent;
+  for (const Run& run : rt.runs) {
+    style.size = run.size;
+    scene.text(run.text, {x + run.dx, y + run.dy}, style);
+  }
+}
+
 }  // namespace
 
 render::Image paint(const Painter& p, int width, int height, Color background, const render::PixelFilter& filter,
@@ -211,7 +258,7 @@ render::Image paint(const Painter& p, int width, int height, Color background, c
             } else if constexpr (std::is_same_v<T, MarkerOp>) {
               scene.marker(op.shape, {op.centre.x * s, op.centre.y * s}, op.size * s, op.color);
             } else if constexpr (std::is_same_v<T, TextOp>) {
-              scene.text(op.text, {op.at.x * s, op.at.y * s}, text_style(op.font, op.anchor, s));
+              draw_text(scene, op, s);
             }
           },
           *it);

@@ -4,6 +4,8 @@
 // draws vector items, images are composited between layers (premultiplied, over).
 #include <splinefig/figures/spec.hpp>
 
+#include <map>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -56,7 +58,7 @@ class Painter {
   void text(std::string s, Vec2 at, const Font& f, TextAnchor a);
   void image(Raster r, double x0, double y0, double x1, double y1);
 
-  // Text extent in layout units, measured at the output size.
+  // Extent of a label (rich_text.hpp markup) in layout units, measured at the output size.
   render::TextExtent measure(const std::string& s, const Font& f) const;
 
   const std::vector<Op>& ops() const { return ops_; }
@@ -64,6 +66,7 @@ class Painter {
  private:
   double scale_;
   std::vector<Op> ops_;
+  mutable std::map<std::tuple<std::string, double, bool>, render::TextExtent> cache_;
 };
 
 // Width and height of a raster in its own pixels (reads the file header if needed).

@@ -3,6 +3,7 @@
 #include "plot.hpp"
 
 #include <splinefig/figures/palette.hpp>
+#include <splinefig/spline/arclength.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -102,7 +103,7 @@ void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy
       if (c->marks > 0) {
         std::vector<double> ts;
         const double T = static_cast<double>(curve.segments());
-        if (c->marks_by_arclength) ts = arclength_parameters(curve, c->marks);
+        if (c->marks_by_arclength && c->marks >= 2) ts = evenly_spaced_parameters(curve, static_cast<size_t>(c->marks));
         else
           for (int j = 0; j < c->marks; ++j) ts.push_back(c->marks == 1 ? 0 : T * j / (c->marks - 1));
         std::array<double, 2> xy{};
@@ -262,7 +263,7 @@ void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy
     }
   }
 
-  Font font{12.5, {}, false};
+  Font font{15, {}, false};
   for (auto& il : inline_labels) {
     font.color = il.color;
     if (il.offset) {

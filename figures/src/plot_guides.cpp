@@ -122,8 +122,11 @@ void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry
     text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - sample - gap);
     title_h = row;
   }
-  const double w = std::ceil(pad + sample + gap + text_w + pad);
-  const double h = std::ceil(pad + title_h + row * entries.size() + pad - 4);
+  const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(entries.size())));
+  const int rows = static_cast<int>((entries.size() + cols - 1) / cols);
+  const double col_w = sample + gap + text_w + 16;
+  const double w = std::ceil(pad + cols * col_w - 16 + pad);
+  const double h = std::ceil(pad + title_h + row * rows + pad - 4);
   const Rect& b = panel.box;
   const double inset = 10;
   struct Spot {
@@ -158,22 +161,22 @@ void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry
     p.text(ax.legend_title, {x + pad, cy + 0.5 * row}, tf, {render::HAlign::Left, render::VAlign::Middle});
     cy += row;
   }
-  for (const auto& e : entries) {
-    double my = cy + 0.5 * row - 2;
-    double sx0 = x + pad, sx1 = x + pad + sample;
+  for (size_t i = 0; i < entries.size(); ++i) {
+    const Entry& e = entries[i];
+    const int r = static_cast<int>(i) / cols, c = static_cast<int>(i) % cols;
+    double my = cy + row * r + 0.5 * row - 2;
+    double sx0 = x + pad + c * col_w, sx1 = sx0 + sample;
     if (e.patch) {
       p.fill({{{sx0, my - 6}, {sx1, my - 6}, {sx1, my + 6}, {sx0, my + 6}}}, render::FillRule::NonZero, e.color);
     }
     if (e.line) {
       render::StrokeStyle st = e.style;
       st.cap = st.dashes.empty() ? render::Cap::Round : render::Cap::Butt;
-      p.stroke({{sx0 + (st.dashes.empty() ? st.width / 2 : 0), my}, {sx1 - (st.dashes.empty() ? st.width / 2 : 0), my}},
-               false, st, e.color);
+      double inset_x = st.dashes.empty() ? st.width / 2 : 0;
+      p.stroke({{sx0 + inset_x, my}, {sx1 - inset_x, my}}, false, st, e.color);
     }
     if (e.markers) p.marker(e.marker, {0.5 * (sx0 + sx1), my}, e.marker_size, e.color);
-    Font ef = f;
-    p.text(e.label, {sx1 + gap, my}, ef, {render::HAlign::Left, render::VAlign::Middle});
-    cy += row;
+    p.text(e.label, {sx1 + gap, my}, f, {render::HAlign::Left, render::VAlign::Middle});
   }
 }
 

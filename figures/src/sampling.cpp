@@ -4,7 +4,6 @@
 #include <splinefig/spline/segment.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <functional>
 
@@ -16,10 +15,11 @@ constexpr int kMaxSteps = 1 << 14;
 // A polynomial piece in pixel space: P(u) = sum_k cx[k] u^k, likewise y (ascending powers).
 struct PixelPoly {
   std::vector<double> cx, cy;
-  Vec2 at(double u) const {
-    double x = 0, y = 0;
-    for (size_t k = cx.size(); k-- > 0;) x = x * u + cx[k], y = y * u + cy[k];
-    return {x, y};
+  Vec2 at(double u) const { return {horner(cx, u), horner(cy, u)}; }
+  static double horner(const std::vector<double>& c, double u) {
+    double v = 0;
+    for (size_t k = c.size(); k-- > 0;) v = v * u + c[k];
+    return v;
   }
   // Bound on |P''(u)| over u in [u0, u1]: sum_k k(k-1) |c_k| max(|u0|,|u1|)^(k-2) per axis.
   double second_derivative_bound(double u0, double u1) const {
@@ -152,56 +152,6 @@ std::vector<std::vector<Vec2>> sample_kernel(const Basis& b, double s0, double s
   if (s1 > sup.hi && last != pieces.rend()) last->push_back(map({s1, 0.0}));
   else if (s1 > sup.hi && s0 >= sup.hi) pieces.back() = {map({s0, 0.0}), map({s1, 0.0})};
   return pieces;
-}
-
-std::vector<double> arclength_parameters(const Curve& c, int count) {
-  static const std::array<double, 8> x = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                                          -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                                          0.7966664774136267,  0.9602898564975363};
-  static const std::array<double, 8> w = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                                          0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                                          0.2223810344533745, 0.1012285362903763};
-  const int dim = c.dim();
-  std::vector<double> d(static_cast<size_t>(dim));
-  auto speed = [&](double t) {
-    evaluate(c, t, 1, d);
-    double s = 0;
-    for (double v : d) s += v * v;
-    return std::sqrt(s);
-  };
-  auto length = [&](double t0, double t1) {
-    double h = 0.5 * (t1 - t0), m = 0.5 * (t0 + t1), s = 0;
-    for (int k = 0; k < 8; ++k) s += w[k] * speed(m + h * x[k]);
-    return s * h;
-  };
-  const int sub = 16;
-  const double T = static_cast<double>(c.segments());
-  const int cells = static_cast<int>(c.segments()) * sub;
-  std::vector<double> cum(static_cast<size_t>(cells) + 1, 0.0);
-  for (int k = 0; k < cells; ++k) cum[k + 1] = cum[k] + length(static_cast<double>(k) / sub, static_cast<double>(k + 1) / sub);
-  std::vector<double> ts;
-  if (count <= 0) return ts;
-  const double total = cum.back();
-  for (int j = 0; j < count; ++j) {
-    if (j == 0) { ts.push_back(0); continue; }
-    if (j == count - 1) { ts.push_back(T); continue; }
-    double target = total * j / (count - 1);
-    int k = static_cast<int>(std::upper_bound(cum.begin(), cum.end(), target) - cum.begin()) - 1;
-    k = std::clamp(k, 0, cells - 1);
-    double a = static_cast<double>(k) / sub, b = static_cast<double>(k + 1) / sub;
-    double seg = cum[k + 1] - cum[k];
-    double t = seg > 0 ? a + (b - a) * (target - cum[k]) / seg : a;
-    for (int it = 0; it < 8; ++it) {  // Newton on L(t) = target within the cell, kept bracketed
-      double f = cum[k] + length(a, t) - target;
-      double v = speed(t);
-      if (!(v > 1e-12)) break;
-      double next = std::clamp(t - f / v, a, b);
-      if (std::abs(next - t) < 1e-13) { t = next; break; }
-      t = next;
-    }
-    ts.push_back(t);
-  }
-  return ts;
 }
 
 }  // namespace splinefig::figures

@@ -20,7 +20,7 @@ Basis checked_basis(TableReader& r, std::string_view key, const std::string& spe
 
 Labelling parse_labelling(TableReader& r) {
   Labelling l;
-  l.label = r.string("label", "");
+  l.label = r.label("label", "");
   l.in_legend = r.choice("label_position", {"legend", "inline"}, 0) == 0;
   l.label_at = r.opt_number("label_at");
   l.label_offset = r.opt_point("label_offset");
@@ -174,7 +174,7 @@ TextItem parse_text(TableReader& r) {
   auto at = r.opt_point("at");
   if (!at) r.fail("at", "text needs at = [x, y]");
   t.at = *at;
-  auto text = r.opt_string("text");
+  auto text = r.opt_label("text");
   if (!text) r.fail("text", "text needs text = \"...\"");
   t.text = *text;
   t.font = r.font(t.font);
@@ -225,7 +225,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   FigureSpec spec;
   spec.name = std::filesystem::path(name).stem().string();
   spec.path = name;
-  spec.title = r.string("title", "");
+  spec.title = r.label("title", "");
   spec.caption = r.string("caption", "");
   spec.show_title = r.boolean("show_title", true);
   spec.title_size = r.positive("title_size", spec.title_size);

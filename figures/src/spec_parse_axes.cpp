@@ -29,7 +29,7 @@ void parse_axis(TableReader& r, char name, AxisSpec& axis) {
   axis.scale = static_cast<Scale>(r.choice(p + "_scale", {"linear", "log", "db"}, 0));
   if (axis.scale == Scale::Log && axis.range && ((*axis.range)[0] <= 0 || (*axis.range)[1] <= 0))
     r.fail(p + "_range", "a log axis needs a positive range");
-  axis.label = r.string(p + "_label", "");
+  axis.label = r.label(p + "_label", "");
   if (r.has(p + "_ticks")) {
     const toml::node* n = r.node(p + "_ticks");
     if (auto b = n->as_boolean()) {
@@ -38,7 +38,7 @@ void parse_axis(TableReader& r, char name, AxisSpec& axis) {
       axis.ticks = r.numbers(p + "_ticks");
     }
   }
-  axis.tick_labels = r.strings(p + "_tick_labels");
+  axis.tick_labels = r.labels(p + "_tick_labels");
   if (!axis.tick_labels.empty() && (!axis.ticks || axis.ticks->size() != axis.tick_labels.size()))
     r.fail(p + "_tick_labels", "needs explicit " + p + "_ticks of the same length");
   if (auto s = r.opt_number(p + "_tick_step")) {
@@ -101,7 +101,7 @@ KernelElement parse_kernel(TableReader& r) {
   }
   k.color = r.opt_color("color");
   k.piece_colors = r.colors("colors");
-  k.piece_labels = r.strings("labels");
+  k.piece_labels = r.labels("labels");
   size_t pieces = static_cast<size_t>(k.basis.order());
   if (!k.piece_colors.empty() && k.piece_colors.size() != pieces)
     r.fail("colors", "the kernel has " + std::to_string(pieces) + " pieces, " + std::to_string(k.piece_colors.size()) + " colours given");
@@ -180,7 +180,7 @@ TextElement parse_text_element(TableReader& r) {
   auto at = r.opt_point("at");
   if (!at) r.fail("at", "text needs at = [x, y] (data)");
   t.at = *at;
-  auto text = r.opt_string("text");
+  auto text = r.opt_label("text");
   if (!text) r.fail("text", "text needs text = \"...\"");
   t.text = *text;
   t.offset = r.opt_point("offset").value_or(Vec2{0, 0});
@@ -197,7 +197,7 @@ AnnotationElement parse_annotation(TableReader& r) {
   if (!to) r.fail("to", "an annotation needs to = [x, y] (the arrow's tip, data)");
   a.at = *at;
   a.to = *to;
-  auto text = r.opt_string("text");
+  auto text = r.opt_label("text");
   if (!text) r.fail("text", "an annotation needs text = \"...\"");
   a.text = *text;
   a.font = r.font(a.font);
@@ -240,14 +240,15 @@ AxesSpec parse_axes(const toml::table& table, const std::string& path, const Par
   parse_axis(r, 'x', ax.x);
   parse_axis(r, 'y', ax.y);
   if (ax.x.scale == Scale::Decibel) r.fail("x_scale", "db is for the y axis");
-  ax.title = r.string("title", "");
+  ax.title = r.label("title", "");
   ax.grid = r.boolean("grid", false);
   ax.equal_aspect = r.choice("aspect", {"auto", "equal"}, 0) == 1;
   ax.zero_line = r.boolean("zero_line", false);
   ax.frame = static_cast<Frame>(r.choice("frame", {"box", "left-bottom", "none"}, 1));
   ax.legend = static_cast<LegendPlace>(r.choice(
       "legend", {"auto", "none", "upper left", "upper right", "lower left", "lower right", "upper center", "lower center"}, 0));
-  ax.legend_title = r.string("legend_title", "");
+  ax.legend_title = r.label("legend_title", "");
+  ax.legend_columns = r.integer("legend_columns", 1, 1, 16);
   ax.palette = r.string("palette", ax.palette);
   if (!palette_known(ax.palette)) r.fail("palette", "unknown palette \"" + ax.palette + "\" (viridis | tab10 | grey)");
   if (r.has("cell")) {

@@ -1,6 +1,8 @@
 // Checked access to TOML tables of figure specs (see toml_reader.hpp).
 #include "toml_reader.hpp"
 
+#include "rich_text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -131,6 +133,28 @@ std::optional<std::string> TableReader::opt_string(std::string_view key) {
 
 std::string TableReader::string(std::string_view key, const std::string& fallback) {
   return opt_string(key).value_or(fallback);
+}
+
+std::optional<std::string> TableReader::opt_label(std::string_view key) {
+  auto s = opt_string(key);
+  if (s) {
+    std::string problem = markup_problem(*s);
+    if (!problem.empty()) fail(key, "\"" + *s + "\": " + problem);
+  }
+  return s;
+}
+
+std::string TableReader::label(std::string_view key, const std::string& fallback) {
+  return opt_label(key).value_or(fallback);
+}
+
+std::vector<std::string> TableReader::labels(std::string_view key) {
+  auto v = strings(key);
+  for (const auto& s : v) {
+    std::string problem = markup_problem(s);
+    if (!problem.empty()) fail(key, "\"" + s + "\": " + problem);
+  }
+  return v;
 }
 
 int TableReader::choice(std::string_view key, const std::vector<std::string>& choices, int fallback) {

@@ -29,6 +29,10 @@ class TableReader {
   bool boolean(std::string_view key, bool fallback);
   std::string string(std::string_view key, const std::string& fallback);
   std::optional<std::string> opt_string(std::string_view key);
+  // Text to be drawn: checked against the label markup (rich_text.hpp).
+  std::string label(std::string_view key, const std::string& fallback);
+  std::optional<std::string> opt_label(std::string_view key);
+  std::vector<std::string> labels(std::string_view key);
   // One of `choices`; returns its index.
   int choice(std::string_view key, const std::vector<std::string>& choices, int fallback);
   Color color(std::string_view key, Color fallback);

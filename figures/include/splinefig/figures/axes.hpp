@@ -30,14 +30,14 @@ struct Tick {
 
 // Nice ticks for [lo, hi] (either order): steps 1, 2 or 5 times a power of ten, about
 // `target` of them, every tick inside the range (to 1e-9 of the step). `step` > 0 forces
-// the step. Labels print just the digits the step needs, with a true minus sign.
+// the step. Labels print just the digits the step needs.
 std::vector<Tick> nice_ticks(double lo, double hi, double target, double step = 0);
 // The step nice_ticks would use.
 double nice_step(double lo, double hi, double target);
-// Decades 10^k inside [lo, hi] (lo, hi > 0), labelled 10^k with superscripts; falls back to
+// Decades 10^k inside [lo, hi] (lo, hi > 0), labelled "10^{k}" (label markup); falls back to
 // nice_ticks when the range spans less than one decade.
 std::vector<Tick> log_ticks(double lo, double hi);
-// A number with `decimals` digits after the point, "-" written as U+2212.
+// A number with `decimals` digits after the point ("-0" printed as "0").
 std::string format_number(double v, int decimals);
 
 }  // namespace splinefig::figures

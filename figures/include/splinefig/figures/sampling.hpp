@@ -29,10 +29,4 @@ std::vector<Vec2> sample_curve(const Curve& curve, const PixelMap& map, double t
 // [s0, s1] come back empty.
 std::vector<std::vector<Vec2>> sample_kernel(const Basis& basis, double s0, double s1, double scale,
                                              const PixelMap& map, double tolerance);
-
-// Parameters t of `count` points evenly spaced in arc length (data space) along the
-// curve, the first at t = 0 and the last at t = segments(). Arc length by 8-point
-// Gauss-Legendre on 16 sub-intervals per piece, inverted by Newton steps.
-std::vector<double> arclength_parameters(const Curve& curve, int count);
-
 }  // namespace splinefig::figures

@@ -233,6 +233,7 @@ struct AxesSpec {
   Frame frame = Frame::LeftBottom;
   LegendPlace legend = LegendPlace::Auto;
   std::string legend_title;
+  int legend_columns = 1;
   std::string palette = "viridis";
   std::optional<std::array<int, 2>> cell;       // [row, col] in the figure's layout grid
   std::optional<std::array<double, 4>> box;     // explicit pixel box [left, top, right, bottom]
