@@ -10,29 +10,42 @@
 namespace splinefig {
 namespace {
 
-// Solves the tridiagonal system with unit sub- and super-diagonals and diagonal `diag`,
-// for every coordinate of the right-hand sides in `rhs` (overwritten with the solution).
-// Thomas elimination; stable because |diag_i| >= 2 + (neighbours) keeps every pivot >= 1 +
-// sqrt(3) for the 1-4-1 rows and >= 1.5 for a 2-1 end row.
-void solve_unit_tridiagonal(const std::vector<double>& diag, Points& rhs) {
-  const std::size_t n = diag.size();
-  const std::size_t dim = static_cast<std::size_t>(rhs.dim);
-  assert(rhs.size() == n && n >= 1);
-  std::vector<double> cp(n);  // c'_i = 1 / pivot_i: the super-diagonal after elimination
-  double* d = rhs.coords.data();
-  cp[0] = 1 / diag[0];
-  for (std::size_t c = 0; c < dim; ++c) d[c] *= cp[0];
+// Solves the tridiagonal system with unit sub- and super-diagonals and the diagonal
+// (first, middle, ..., middle, last), for every coordinate of the rows rhs[0..n) (overwritten
+// with the solution). Thomas elimination; stable because every row is strictly diagonally
+// dominant (4 > 1 + 1; an end row 2 > 1 or 8 > 1): each pivot stays >= 1.5.
+//
+// The eliminated super-diagonal c'_i = 1/(middle - c'_{i-1}) is a contraction that reaches its
+// fixed point (2 - sqrt(3) for the 1-4-1 rows) bit for bit after a few dozen rows; from then
+// on the stored value is reused, so the work is O(n) with O(1) extra memory and the result is
+// identical to storing every c'_i.
+void solve_unit_tridiagonal(double first, double middle, double last, std::size_t n, std::size_t dim, double* rhs) {
+  assert(n >= 1);
+  if (n == 1) {
+    for (std::size_t c = 0; c < dim; ++c) rhs[c] /= first;
+    return;
+  }
+  std::vector<double> cp;  // c'_0 .. c'_k; c'_i = c'_k for i > k once it has stopped changing
+  cp.reserve(64);
+  cp.push_back(1 / first);
+  bool fixed = false;
+  for (std::size_t c = 0; c < dim; ++c) rhs[c] *= cp[0];
   for (std::size_t i = 1; i < n; ++i) {
-    const double inv = 1 / (diag[i] - cp[i - 1]);
-    cp[i] = inv;
-    double* di = d + i * dim;
+    const double prev = fixed ? cp.back() : cp[i - 1];
+    const double inv = 1 / ((i + 1 == n ? last : middle) - prev);
+    if (!fixed && i + 1 < n) {
+      fixed = inv == prev;
+      if (!fixed) cp.push_back(inv);
+    }
+    double* di = rhs + i * dim;
     const double* dp = di - dim;
     for (std::size_t c = 0; c < dim; ++c) di[c] = (di[c] - dp[c]) * inv;
   }
   for (std::size_t i = n - 1; i-- > 0;) {
-    double* di = d + i * dim;
+    const double ci = i < cp.size() ? cp[i] : cp.back();
+    double* di = rhs + i * dim;
     const double* dn = di + dim;
-    for (std::size_t c = 0; c < dim; ++c) di[c] -= cp[i] * dn[c];
+    for (std::size_t c = 0; c < dim; ++c) di[c] -= ci * dn[c];
   }
 }
 
@@ -49,16 +62,15 @@ Interpolant interpolate_relaxed(const Points& data) {
   const std::size_t n = data.size() - 1, dim = static_cast<std::size_t>(data.dim);
   Interpolant s{EndCondition::relaxed, data, data};
   if (n == 1) return s;  // B = S: a straight segment
-  // Unknowns B_1..B_{n-1}: rows 6S_i, with S_0 and S_n moved to the right in the end rows.
-  Points rhs(data.dim, n - 1);
-  for (std::size_t i = 1; i < n; ++i)
-    for (std::size_t c = 0; c < dim; ++c) rhs.coords[(i - 1) * dim + c] = 6 * data.coords[i * dim + c];
+  // Unknowns B_1..B_{n-1}, solved in place: rows 6S_i, with S_0 and S_n moved to the right in
+  // the end rows.
+  double* b = s.control.coords.data();
+  for (std::size_t k = dim; k < n * dim; ++k) b[k] *= 6;
   for (std::size_t c = 0; c < dim; ++c) {
-    rhs.coords[c] -= data.coords[c];
-    rhs.coords[(n - 2) * dim + c] -= data.coords[n * dim + c];
+    b[dim + c] -= data.coords[c];
+    b[(n - 1) * dim + c] -= data.coords[n * dim + c];
   }
-  solve_unit_tridiagonal(std::vector<double>(n - 1, 4.0), rhs);
-  std::copy(rhs.coords.begin(), rhs.coords.end(), s.control.coords.begin() + static_cast<std::ptrdiff_t>(dim));
+  solve_unit_tridiagonal(4, 4, 4, n - 1, dim, b + dim);
   return s;
 }
 
@@ -76,9 +88,7 @@ Interpolant interpolate_clamped(const Points& data, std::span<const double> v, s
     rhs.coords[c] = 3 * data.coords[c] + v[c];
     rhs.coords[n * dim + c] = 3 * data.coords[n * dim + c] - w[c];
   }
-  std::vector<double> diag(n + 1, 4.0);
-  diag.front() = diag.back() = 2.0;
-  solve_unit_tridiagonal(diag, rhs);
+  solve_unit_tridiagonal(2, 4, 2, n + 1, dim, rhs.coords.data());
   return Interpolant{EndCondition::clamped, data, std::move(rhs)};
 }
 
@@ -102,16 +112,13 @@ Interpolant interpolate_periodic(const Points& data) {
     // g = -4, so T is tridiagonal with diagonal (4 - g, 4, ..., 4, 4 - 1/g) and still
     // diagonally dominant. x = y - (v.y / (1 + v.z)) z with T y = 6S, T z = u.
     const double g = -4;
-    std::vector<double> diag(n, 4.0);
-    diag.front() = 4 - g;
-    diag.back() = 4 - 1 / g;
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t c = 0; c < dim; ++c) x.coords[i * dim + c] = 6 * data.coords[i * dim + c];
-    solve_unit_tridiagonal(diag, x);
+    solve_unit_tridiagonal(4 - g, 4, 4 - 1 / g, n, dim, x.coords.data());
     Points z(1, n);
     z.coords.front() = g;
     z.coords.back() = 1;
-    solve_unit_tridiagonal(diag, z);
+    solve_unit_tridiagonal(4 - g, 4, 4 - 1 / g, n, 1, z.coords.data());
     const double vz = z.coords.front() + z.coords.back() / g;
     for (std::size_t c = 0; c < dim; ++c) {
       const double vy = x.coords[c] + x.coords[(n - 1) * dim + c] / g;
@@ -119,7 +126,8 @@ Interpolant interpolate_periodic(const Points& data) {
       for (std::size_t i = 0; i < n; ++i) x.coords[i * dim + c] -= f * z.coords[i];
     }
   }
-  x.coords.insert(x.coords.end(), x.coords.begin(), x.coords.begin() + static_cast<std::ptrdiff_t>(dim));
+  x.coords.resize((n + 1) * dim);
+  std::copy_n(x.coords.begin(), dim, x.coords.begin() + static_cast<std::ptrdiff_t>(n * dim));
   return Interpolant{EndCondition::periodic, data, std::move(x)};
 }
 

@@ -71,7 +71,7 @@ void basis_functions(const std::vector<double>& knots, int degree, std::size_t s
   // Raise the degree one step at a time: at step j the j+1 functions of degree j on the span
   // are combined with the weights (t - t_i)/(t_{i+j} - t_i) of the recursion; the
   // denominators are lengths of intervals containing the non-empty span, never 0.
-  std::array<double, 33> left_small{}, right_small{};
+  std::array<double, 33> left_small, right_small;  // no need to clear: written before read
   std::vector<double> left_big, right_big;
   double* left = left_small.data();
   double* right = right_small.data();
@@ -113,7 +113,7 @@ void de_boor(const BSplineCurve& c, double t, std::span<double> out) {
   const std::vector<double>& k = c.knots;
   // d_j = P_{s-p+j}; level r replaces d_j (j = p..r) by the point at t on the segment
   // d_{j-1} d_j, whose knots are t_{s-p+j} and t_{s+1+j-r}.
-  std::array<double, 64> small{};
+  std::array<double, 64> small;  // written before read
   std::vector<double> big;
   double* d = small.data();
   if ((p + 1) * dim > small.size()) {
@@ -157,6 +157,110 @@ void evaluate(const BSplineCurve& c, double t, int derivative_order, std::span<d
   for (int k = 1; k < derivative_order; ++k) d = derivative(d);
   // The derivative curve lives on the same domain [t_p, t_count] (its knots lost one at each end).
   de_boor(d, t, out);
+}
+
+namespace {
+
+// out[k] = sum_i E_i[k] P_i[k mod D] for k < K (E_i = E + i*K): blocks of L = 4D outputs
+// against control coordinates repeated with the same period, so the inner loops are
+// contiguous and of fixed length.
+template <std::size_t D>
+void apply_span(const double* E, std::size_t K, const double* P, std::size_t p, double* o) {
+  constexpr std::size_t L = 4 * D;
+  std::size_t k0 = 0;
+  for (; k0 + L <= K; k0 += L) {
+    double acc[L];
+    for (std::size_t m = 0; m < L; ++m) acc[m] = E[k0 + m] * P[m % D];
+    for (std::size_t i = 1; i <= p; ++i) {
+      const double* e = E + i * K + k0;
+      const double* pi = P + i * D;
+      for (std::size_t m = 0; m < L; ++m) acc[m] += e[m] * pi[m % D];
+    }
+    for (std::size_t m = 0; m < L; ++m) o[k0 + m] = acc[m];
+  }
+  for (; k0 < K; ++k0) {
+    double v = 0;
+    for (std::size_t i = 0; i <= p; ++i) v += E[i * K + k0] * P[i * D + k0 % D];
+    o[k0] = v;
+  }
+}
+
+// The same for any dimension, with the period spelled out in Q ((p+1) x 4*dim scratch).
+void apply_span_generic(const double* E, std::size_t K, const double* P, std::size_t p, std::size_t dim,
+                        double* Q, double* o) {
+  const std::size_t L = 4 * dim;
+  for (std::size_t i = 0; i <= p; ++i)
+    for (std::size_t r = 0; r < 4; ++r)
+      for (std::size_t q = 0; q < dim; ++q) Q[i * L + r * dim + q] = P[i * dim + q];
+  std::size_t k0 = 0;
+  for (; k0 + L <= K; k0 += L) {
+    double* ob = o + k0;
+    for (std::size_t m = 0; m < L; ++m) ob[m] = E[k0 + m] * Q[m];
+    for (std::size_t i = 1; i <= p; ++i) {
+      const double* e = E + i * K + k0;
+      const double* qi = Q + i * L;
+      for (std::size_t m = 0; m < L; ++m) ob[m] += e[m] * qi[m];
+    }
+  }
+  for (; k0 < K; ++k0) {
+    double v = 0;
+    for (std::size_t i = 0; i <= p; ++i) v += E[i * K + k0] * P[i * dim + k0 % dim];
+    o[k0] = v;
+  }
+}
+
+}  // namespace
+
+Points sample(const BSplineCurve& c, int grain) {
+  if (grain < 1) throw std::invalid_argument("grain must be at least 1, got " + std::to_string(grain));
+  const auto p = static_cast<std::size_t>(c.degree);
+  const auto dim = static_cast<std::size_t>(c.control.dim);
+  const std::size_t count = c.control.size(), g = static_cast<std::size_t>(grain);
+  const std::vector<double>& k = c.knots;
+  std::size_t spans = 0;
+  for (std::size_t s = p; s < count; ++s) spans += k[s + 1] > k[s];
+  Points out(c.control.dim, spans * g + 1);
+  double* o = out.coords.data();
+  // E[i*K + j*dim + q] = N_{s-p+i}(t_j) for the grain parameters t_j of span s, repeated for
+  // each coordinate q (K = grain*dim). The basis functions on a span depend only on the
+  // differences of the 2p knots around it, so a span shaped like the one before (every span of
+  // a uniform knot vector) reuses its table.
+  const std::size_t K = g * dim;
+  std::vector<double> E((p + 1) * K), w(p + 1), Q((p + 1) * 4 * dim), shape, prev_shape;
+  std::size_t last = p;
+  for (std::size_t s = p; s < count; ++s) {
+    const double a = k[s], b = k[s + 1];
+    if (!(b > a)) continue;
+    last = s;
+    shape.assign(k.begin() + static_cast<std::ptrdiff_t>(s + 1 - p), k.begin() + static_cast<std::ptrdiff_t>(s + p + 1));
+    for (double& x : shape) x -= a;
+    if (shape != prev_shape) {
+      for (std::size_t j = 0; j < g; ++j) {
+        basis_functions(k, c.degree, s, a + (b - a) * static_cast<double>(j) / static_cast<double>(g), w);
+        for (std::size_t i = 0; i <= p; ++i)
+          for (std::size_t q = 0; q < dim; ++q) E[i * K + j * dim + q] = w[i];
+      }
+      prev_shape.swap(shape);
+    }
+    const double* P = c.control.coords.data() + (s - p) * dim;
+    switch (dim) {
+      case 1: apply_span<1>(E.data(), K, P, p, o); break;
+      case 2: apply_span<2>(E.data(), K, P, p, o); break;
+      case 3: apply_span<3>(E.data(), K, P, p, o); break;
+      case 4: apply_span<4>(E.data(), K, P, p, o); break;
+      default: apply_span_generic(E.data(), K, P, p, dim, Q.data(), o);
+    }
+    o += K;
+  }
+  std::vector<double> N(p + 1);
+  basis_functions(k, c.degree, last, k[last + 1], N);
+  const double* P = c.control.coords.data() + (last - p) * dim;
+  for (std::size_t q = 0; q < dim; ++q) {
+    double v = 0;
+    for (std::size_t i = 0; i <= p; ++i) v += N[i] * P[i * dim + q];
+    o[q] = v;
+  }
+  return out;
 }
 
 BSplineCurve insert_knot(const BSplineCurve& c, double t) {

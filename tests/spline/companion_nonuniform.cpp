@@ -191,3 +191,25 @@ TEST_CASE("Invalid knot vectors are rejected with the reason") {
   CHECK_THROWS_WITH(validate(BSplineCurve{5, uniform_knots(4, 5), P}), Catch::Contains("at least 6 control points"));
   CHECK_THROWS_WITH(validate(BSplineCurve{3, {0, 0, 0, 1, 1, 1, 1, 1}, P}), Catch::Contains("empty domain"));
 }
+
+TEST_CASE("Sampling by spans equals de Boor at the same parameters, uniform and not") {
+  for (int dim : {2, 3, 5})
+  for (const std::vector<double>& K : {uniform_knots(9, 3), std::vector<double>{0, 0, 0, 0, 0.5, 2, 2, 3, 3.25, 4, 4, 4, 4}}) {
+    const Points P = random_points(9, dim, 12);
+    const BSplineCurve c{3, K, P};
+    const Points s = sample(c, 5);
+    std::size_t row = 0;
+    for (std::size_t span = 3; span < 9; ++span) {
+      if (!(K[span + 1] > K[span])) continue;
+      for (int j = 0; j < 5; ++j, ++row) {
+        std::vector<double> x(static_cast<std::size_t>(dim));
+        de_boor(c, K[span] + (K[span + 1] - K[span]) * j / 5.0, x);
+        for (std::size_t d = 0; d < x.size(); ++d) CHECK(s[row][d] == Approx(x[d]).margin(1e-13));
+      }
+    }
+    REQUIRE(row + 1 == s.size());
+    std::vector<double> end(static_cast<std::size_t>(dim));
+    de_boor(c, c.t_max(), end);
+    CHECK(s[row][0] == Approx(end[0]).margin(1e-13));
+  }
+}

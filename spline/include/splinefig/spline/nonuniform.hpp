@@ -56,6 +56,12 @@ BSplineCurve derivative(const BSplineCurve& c);
 // P(t), dP/dt or d2P/dt2 at t (derivative 0..p; higher derivatives are 0).
 void evaluate(const BSplineCurve& c, double t, int derivative, std::span<double> out);
 
+// P(t) at `grain` evenly spaced parameters in every non-empty span [t_s, t_{s+1}) of the domain,
+// then P(t_max): (non-empty spans) * grain + 1 points, each from its p+1 basis functions
+// (Cox-de Boor) on that span. On uniform knots this is the memo's sampling of the uniform
+// B-spline of degree p (grain >= 1, else std::invalid_argument).
+Points sample(const BSplineCurve& c, int grain);
+
 // Boehm's knot insertion: the same curve with one more knot at t (t_min <= t <= t_max) and one
 // more control point. Inserting the midpoint of every span of a uniform cubic is one step of
 // the subdivision of seed 002 §4.16.9.
