@@ -60,7 +60,7 @@ TEST_CASE("Duff's B_a equals Barsky's B_{1, 12(1-a)/a}") {
   }
 }
 
-TEST_CASE("Kernel values: Catmull-Rom k(0)=1, min -2/27 at 4/3; B-spline 2/3, 1/6") {
+TEST_CASE("Kernel values: Catmull-Rom k(0)=1 and min -2/27 at 4/3, B-spline 2/3 and 1/6") {
   const Basis c = catmull_rom(), b = bspline();
   CHECK(kernel(c, 0) == 1.0);
   CHECK(kernel(c, 1) == 0.0);
