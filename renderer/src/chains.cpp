@@ -6,23 +6,36 @@ namespace splinefig::render::detail {
 
 void ChainBuilder::move_to(Vec2 p) {
   if (open_contour_) close();
+  p = Vec2{p.x - shift_.x, p.y - shift_.y};
   start_ = cur_ = p;
   open_contour_ = true;
 }
 
 void ChainBuilder::close() {
   if (!open_contour_) return;
-  if (!(cur_ == start_)) line_to(start_);
+  if (!(cur_ == start_)) segment_to(start_);
   end_chain();
   open_contour_ = false;
 }
 
 void ChainBuilder::line_to(Vec2 b) {
-  if (!open_contour_) move_to(cur_);
+  if (!open_contour_) {
+    start_ = cur_;
+    open_contour_ = true;
+  }
+  segment_to(Vec2{b.x - shift_.x, b.y - shift_.y});
+}
+
+void ChainBuilder::segment_to(Vec2 b) {
   Vec2 a = cur_;
   cur_ = b;
   if (a == b) return;
   const double x0 = clip_.x0, x1 = clip_.x1;
+  if (a.x >= x0 && a.x <= x1 && b.x >= x0 && b.x <= x1 && a.y >= clip_.y0 && a.y <= clip_.y1 &&
+      b.y >= clip_.y0 && b.y <= clip_.y1) {
+    edge(a, b);  // entirely inside: the common case
+    return;
+  }
   // Split at the box's sides, then project x onto [x0, x1].
   double ts[4];
   int nt = 0;

@@ -12,6 +12,7 @@
 // right of it inside the box is unchanged), and y is cut to [clip.y0, clip.y1]. So coordinates
 // like 1e12 cost nothing later and all arithmetic downstream stays near the canvas.
 #include "geometry.hpp"
+#include "huge_pages.hpp"
 
 #include <cstddef>
 #include <vector>
@@ -31,19 +32,27 @@ struct Geometry {
 
 class ChainBuilder {
  public:
-  ChainBuilder(Geometry& g, Box clip) : g_(g), clip_(clip) {}
+  // Points are translated by -shift on input; `clip` is in the translated coordinates.
+  ChainBuilder(Geometry& g, Box clip, Vec2 shift = {}) : g_(g), clip_(clip), shift_(shift) {}
   void move_to(Vec2 p);
   void line_to(Vec2 p);
+  // Room for about n more vertices (avoids regrowing a large vertex array many times).
+  void expect(std::size_t n) {
+    auto& v = g_.verts;
+    if (v.capacity() < v.size() + n) reserve_huge(v, std::max(2 * v.capacity(), v.size() + n));
+  }
   void close();
-  const Box& clip() const { return clip_; }
+  const Box& clip() const { return clip_; }  // in input coordinates when shift is zero
 
  private:
+  void segment_to(Vec2 b);  // translated coordinates
   void clip_y(Vec2 a, Vec2 b);
   void edge(Vec2 a, Vec2 b);
   void end_chain();
 
   Geometry& g_;
   Box clip_;
+  Vec2 shift_;
   Vec2 start_{}, cur_{};
   bool open_contour_ = false;
   bool in_chain_ = false;

@@ -139,7 +139,7 @@ void FilterGrid::rows_of(const Shape& s, int& row0, int& row1) const {
 }
 
 void render_filtered(const Geometry& g, const Prepared& p, const FilterGrid& grid, Image& img, int r0, int r1,
-                     FilterScratch& fs) {
+                     FilterScratch& fs, StripSweep& sweep) {
   const int P = grid.pieces, D = grid.degree1, K = grid.K, W = img.width;
   const int ya = std::max(r0, p.row0), yb = std::min(r1, p.row1);
   if (ya >= yb) return;
@@ -154,7 +154,7 @@ void render_filtered(const Geometry& g, const Prepared& p, const FilterGrid& gri
   fs.row_lo.assign(static_cast<std::size_t>(nrows), W);
   fs.row_hi.assign(static_cast<std::size_t>(nrows), -1);
 
-  StripSweep sweep(g, p.shape);
+  sweep.reset(g, p.shape);
   std::vector<double> M(static_cast<std::size_t>(D * D)), run(static_cast<std::size_t>(D));
   for (int r = cr0; r <= cr1; ++r) {
     MomentRow row{fs, D, qmin, qcount, static_cast<double>(r), qcount, -1, gx, gw};

@@ -41,6 +41,6 @@ struct FilterScratch {
 };
 
 void render_filtered(const Geometry& g, const Prepared& p, const FilterGrid& grid, Image& img, int r0, int r1,
-                     FilterScratch& fs);
+                     FilterScratch& fs, StripSweep& sweep);
 
 }  // namespace splinefig::render::detail

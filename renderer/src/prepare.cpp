@@ -75,12 +75,11 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
   }
   Shape& s = out.shape;
   s.chain_begin = g.chains.size();
-  ChainBuilder b(g, clip);
-  auto sh = [&](Vec2 p) { return Vec2{p.x - shift.x, p.y - shift.y}; };
+  ChainBuilder b(g, clip, shift);
+  auto sh = [](Vec2 p) { return p; };  // the builder translates
   switch (it.kind) {
     case K::Stroke: {
-      std::vector<Vec2> pts(it.contours[0]);
-      for (Vec2& p : pts) p = sh(p);
+      const std::vector<Vec2>& pts = it.contours[0];
       stroke_path(pts, it.closed, it.stroke, b);
       s.simple = it.stroke.dashes.empty() && single_segment(pts, it.closed);
       break;
@@ -118,7 +117,7 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
   s.chain_end = g.chains.size();
   auto first = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_begin);
   auto last = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_end);
-  std::stable_sort(first, last, [](const Chain& x, const Chain& y) { return x.ymin < y.ymin; });
+  std::stable_sort(first, last, [](const Chain& x, const Chain& y) { return x.ymin < y.ymin; });  // stable: deterministic ties
   if (s.empty()) {
     out.row0 = out.row1 = 0;
     return;

@@ -4,12 +4,16 @@
 // which thread ran it or on the other bands, so any thread count gives identical bytes.
 #include "box_coverage.hpp"
 #include "filter_coverage.hpp"
+#include "huge_pages.hpp"
 #include "prepare.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <thread>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 
 namespace splinefig::render {
 namespace detail {
@@ -34,8 +38,8 @@ void composite_mask(const Prepared& p, Image& img, int r0, int r1) {
   }
 }
 
-void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1, BoxRow& row) {
-  StripSweep sweep(g, p.shape);
+void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1, BoxRow& row, StripSweep& sweep) {
+  sweep.reset(g, p.shape);
   const int y_begin = std::max(r0, p.row0), y_end = std::min(r1, p.row1);
   for (int y = y_begin; y < y_end; ++y) {
     row.begin(y);
@@ -62,6 +66,7 @@ Image rasterize(const Scene& scene, int threads) {
   Image img;
   img.width = W;
   img.height = H;
+  reserve_huge(img.rgba, static_cast<std::size_t>(W) * H * 4);
   img.rgba.resize(static_cast<std::size_t>(W) * H * 4);
   const Color bg = scene.background_;
   for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
@@ -76,6 +81,7 @@ Image rasterize(const Scene& scene, int threads) {
   Box clip = box ? Box{0, 0, static_cast<double>(W), static_cast<double>(H)} : grid.clip;
   Vec2 shift = box ? Vec2{0, 0} : Vec2{grid.delta, grid.delta};
 
+  auto T0 = std::chrono::steady_clock::now(); auto C0 = std::clock();
   Geometry geom;
   const auto& items = scene.items();
   std::vector<Prepared> prep(items.size());
@@ -91,6 +97,7 @@ Image rasterize(const Scene& scene, int threads) {
     }
   }
 
+  auto C1 = std::clock();
   const int bands = (H + kBandRows - 1) / kBandRows;
   // Which items touch which band, in item order.
   std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
@@ -107,6 +114,7 @@ Image rasterize(const Scene& scene, int threads) {
     BoxRow row;
     row.reset(W);
     FilterScratch fs;
+    StripSweep sweep;
     for (;;) {
       const int b = next.fetch_add(1);
       if (b >= bands) return;
@@ -114,8 +122,8 @@ Image rasterize(const Scene& scene, int threads) {
       for (std::uint32_t i : band_items[static_cast<std::size_t>(b)]) {
         const Prepared& p = prep[i];
         if (p.is_text) composite_mask(p, img, r0, r1);
-        else if (box) render_box(geom, p, img, r0, r1, row);
-        else render_filtered(geom, p, grid, img, r0, r1, fs);
+        else if (box) render_box(geom, p, img, r0, r1, row, sweep);
+        else render_filtered(geom, p, grid, img, r0, r1, fs, sweep);
       }
     }
   };
@@ -126,6 +134,7 @@ Image rasterize(const Scene& scene, int threads) {
     for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
   }
+  if (std::getenv("SF_TIMING")) std::fprintf(stderr, "prepare %.1f ms cpu, bands %.1f ms cpu, verts %zu chains %zu\n", (C1-C0)*1000.0/CLOCKS_PER_SEC, (std::clock()-C1)*1000.0/CLOCKS_PER_SEC, geom.verts.size(), geom.chains.size()); (void)T0;
   return img;
 }
 

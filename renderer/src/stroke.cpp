@@ -14,8 +14,8 @@ class Outliner {
  public:
   Outliner(const StrokeStyle& s, ChainBuilder& out) : style_(s), h_(0.5 * s.width), out_(out) {}
 
-  void open(std::span<const Vec2> p, const std::vector<Segment>& seg);
-  void closed(std::span<const Vec2> p, const std::vector<Segment>& seg);
+  void open(std::span<const Vec2> p);    // distinct consecutive points, at least 2
+  void closed(std::span<const Vec2> p);  // distinct cyclically consecutive points, at least 2
   void single_point(Vec2 p, Vec2 d);
 
  private:
@@ -55,6 +55,8 @@ void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::v
   v.push_back(A);
   switch (style_.join) {
     case Join::Round: {
+      // 1 - cos(theta/2) <= (1 - cos theta)/2: below tolerance the chord A-B is the arc.
+      if (h * 0.5 * (1 - dt) <= kArcTolerance) break;
       const double a0 = std::atan2(s * a.n.y, s * a.n.x);
       arc_interior(P, h, a0, theta, out_.clip(), [&](Vec2 q) { v.push_back(q); });
       break;
@@ -91,36 +93,53 @@ void Outliner::cap(Vec2 P, Vec2 d, Vec2 n) {
   out_.line_to(P - h * n);
 }
 
-void Outliner::open(std::span<const Vec2> p, const std::vector<Segment>& seg) {
-  const std::size_t m = seg.size();
+Segment segment(Vec2 a, Vec2 b) {
+  Vec2 e = b - a;
+  double len = (std::abs(e.x) < 1e150 && std::abs(e.y) < 1e150) ? std::sqrt(e.x * e.x + e.y * e.y) : length(e);
+  Vec2 d = (1.0 / len) * e;
+  return {d, Vec2{-d.y, d.x}, len};
+}
+
+void Outliner::open(std::span<const Vec2> p) {
+  const std::size_t m = p.size() - 1;  // segments
   const double h = h_;
-  out_.move_to(p[0] + h * seg[0].n);
+  out_.expect(3 * p.size() + 64);
+  Segment first = segment(p[0], p[1]), prev = first;
+  out_.move_to(p[0] + h * first.n);
   for (std::size_t j = 1; j < m; ++j) {
+    Segment next = segment(p[j], p[j + 1]);
     buf_.clear();
-    join(p[j], seg[j - 1], seg[j], 1, buf_);
+    join(p[j], prev, next, 1, buf_);
     emit(buf_, false, false);
+    prev = next;
   }
-  out_.line_to(p[m] + h * seg[m - 1].n);
-  cap(p[m], seg[m - 1].d, seg[m - 1].n);
+  const Segment last = prev;
+  out_.line_to(p[m] + h * last.n);
+  cap(p[m], last.d, last.n);
+  Segment after = last;
   for (std::size_t j = m - 1; j >= 1; --j) {
+    Segment before = segment(p[j - 1], p[j]);
     buf_.clear();
-    join(p[j], seg[j - 1], seg[j], -1, buf_);
+    join(p[j], before, after, -1, buf_);
     emit(buf_, true, false);
+    after = before;
   }
-  Vec2 mn{-seg[0].n.x, -seg[0].n.y}, md{-seg[0].d.x, -seg[0].d.y};
+  Vec2 mn{-first.n.x, -first.n.y}, md{-first.d.x, -first.d.y};
   out_.line_to(p[0] + h * mn);
   cap(p[0], md, mn);
   out_.close();
 }
 
-void Outliner::closed(std::span<const Vec2> p, const std::vector<Segment>& seg) {
-  const std::size_t m = seg.size();  // == p.size(): segment j runs from p[j] to p[(j+1) % m]
+void Outliner::closed(std::span<const Vec2> p) {
+  const std::size_t m = p.size();  // segment j runs from p[j] to p[(j+1) % m]
+  out_.expect(6 * m + 64);
+  auto seg = [&](std::size_t j) { return segment(p[j % m], p[(j + 1) % m]); };
   for (int side : {1, -1}) {
     bool first = true;
     for (std::size_t k = 0; k < m; ++k) {
       std::size_t j = side > 0 ? k : m - 1 - k;
       buf_.clear();
-      join(p[j], seg[(j + m - 1) % m], seg[j], side, buf_);
+      join(p[j], seg(j + m - 1), seg(j), side, buf_);
       emit(buf_, side < 0, first);
       first = false;
     }
@@ -152,39 +171,30 @@ void Outliner::single_point(Vec2 P, Vec2 d) {
   }
 }
 
-// Drops repeated points; returns the segments between the remaining ones.
-std::vector<Segment> segments(std::vector<Vec2>& p, bool closed) {
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (k == 0 || !(p[i] == p[k - 1])) p[k++] = p[i];
-  p.resize(k);
-  if (closed) while (p.size() > 1 && p.back() == p.front()) p.pop_back();
-  std::vector<Segment> seg;
-  if (p.size() < 2) return seg;
-  const std::size_t m = closed ? p.size() : p.size() - 1;
-  seg.reserve(m);
-  for (std::size_t i = 0; i < m; ++i) {
-    Vec2 e = p[(i + 1) % p.size()] - p[i];
-    double len = length(e);
-    Vec2 d = (1.0 / len) * e;
-    seg.push_back({d, Vec2{-d.y, d.x}, len});
-  }
-  return seg;
-}
-
 }  // namespace
 
 void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {
   if (!(style.width > 0) || pts.empty()) return;
-  std::vector<Vec2> p(pts.begin(), pts.end());
-  std::vector<Segment> seg = segments(p, closed);
+  // Repeated consecutive points carry no direction: drop them (copying only if there are any).
+  std::vector<Vec2> copy;
+  bool repeats = false;
+  for (std::size_t i = 1; i < pts.size() && !repeats; ++i) repeats = pts[i] == pts[i - 1];
+  if (closed && pts.size() > 1 && pts.back() == pts.front()) repeats = true;
+  std::span<const Vec2> p = pts;
+  if (repeats) {
+    for (Vec2 q : pts)
+      if (copy.empty() || !(q == copy.back())) copy.push_back(q);
+    if (closed)
+      while (copy.size() > 1 && copy.back() == copy.front()) copy.pop_back();
+    p = copy;
+  }
   Outliner o(style, out);
-  if (seg.empty()) {
+  if (p.size() < 2) {
     // A path of one point: SVG draws its caps as if it ran along +x.
     o.single_point(p[0], Vec2{1, 0});
     return;
   }
-  if (closed && p.size() >= 2) o.closed(p, seg); else o.open(p, seg);
+  if (closed) o.closed(p); else o.open(p);
 }
 
 void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {

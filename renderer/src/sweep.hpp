@@ -31,50 +31,60 @@ struct Shape {
 
 class StripSweep {
  public:
-  StripSweep(const Geometry& g, const Shape& s) : g_(g), s_(s), next_(s.chain_begin) {}
+  // Starts a shape; buffers are kept across shapes.
+  void reset(const Geometry& g, const Shape& s) {
+    g_ = &g;
+    s_ = &s;
+    next_ = s.chain_begin;
+    active_.clear();
+    cursor_.clear();
+  }
 
-  // Strips must come in increasing y order. Returns false if nothing crosses the strip.
+  // Strips must come in increasing y order. Returns false once nothing is left below.
   template <class Sink>
   bool strip(double y0, double y1, Sink& sink);
 
  private:
   struct Span {
-    std::size_t chain, k;  // chain index; first edge (verts[k], verts[k+1]) meeting the strip
+    std::size_t chain, k, cur;  // chain; first edge meeting the strip; cursor for x_on
     double ta, tb, xmin, xmax;
     int dir;
+    int sign;       // boundary status in the current sub-strip: +1 begins, -1 ends, 0 none
+    bool listed;    // in order_
+    double open_y;  // where the current boundary status began
   };
   double x_at(std::size_t k, double y) const {
-    const Vec2 a = g_.verts[k], b = g_.verts[k + 1];
+    const Vec2 a = g_->verts[k], b = g_->verts[k + 1];
     if (y <= a.y) return a.x;
     if (y >= b.y) return b.x;
     return a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
   }
   // x of the span's chain at height y within [ta, tb]; k is a cursor moved forward.
   double x_on(const Span& s, std::size_t& k, double y) const {
-    const std::size_t last = g_.chains[s.chain].last;
-    while (k + 1 < last && g_.verts[k + 1].y < y) ++k;
+    const std::size_t last = g_->chains[s.chain].last;
+    while (k + 1 < last && g_->verts[k + 1].y < y) ++k;
     return x_at(k, y);
   }
   void crossings(const Span& a, const Span& b);
   template <class Sink>
   void emit(const Span& s, double ya, double yb, double sign, Sink& sink) const;
-  bool inside(int w) const { return s_.rule == FillRule::EvenOdd ? (w & 1) != 0 : w != 0; }
+  bool inside(int w) const { return s_->rule == FillRule::EvenOdd ? (w & 1) != 0 : w != 0; }
 
-  const Geometry& g_;
-  const Shape& s_;
-  std::size_t next_;
+  const Geometry* g_ = nullptr;
+  const Shape* s_ = nullptr;
+  std::size_t next_ = 0;
   std::vector<std::size_t> active_;  // chain indices
   std::vector<std::size_t> cursor_;  // per active chain: first edge not entirely above
   std::vector<Span> spans_;
   std::vector<double> events_;
   std::vector<std::uint32_t> order_;
-  std::vector<std::pair<double, std::uint32_t>> sorted_;
+  std::vector<std::pair<double, std::uint32_t>> keyed_;
 };
 
 template <class Sink>
 void StripSweep::emit(const Span& s, double ya, double yb, double sign, Sink& sink) const {
-  const auto& v = g_.verts;
-  const std::size_t last = g_.chains[s.chain].last;
+  const auto& v = g_->verts;
+  const std::size_t last = g_->chains[s.chain].last;
   std::size_t k = s.k;
   while (k + 1 < last && v[k + 1].y <= ya) ++k;
   for (; k < last && v[k].y < yb; ++k) {
@@ -86,8 +96,8 @@ void StripSweep::emit(const Span& s, double ya, double yb, double sign, Sink& si
 
 template <class Sink>
 bool StripSweep::strip(double y0, double y1, Sink& sink) {
-  const auto& ch = g_.chains;
-  const auto& v = g_.verts;
+  const auto& ch = g_->chains;
+  const auto& v = g_->verts;
   // Active set: drop finished chains, add those starting before the strip's bottom.
   std::size_t n = 0;
   for (std::size_t i = 0; i < active_.size(); ++i) {
@@ -99,14 +109,21 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
   }
   active_.resize(n);
   cursor_.resize(n);
-  while (next_ < s_.chain_end && ch[next_].ymin < y1) {
-    if (ch[next_].ymax > y0) {
+  while (next_ < s_->chain_end && ch[next_].ymin < y1) {
+    const Chain& c = ch[next_];
+    if (c.ymax > y0) {
+      // first edge whose lower end is below y0 (binary search: bands may start mid-chain)
+      std::size_t lo = c.first, hi = c.last - 1;
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        if (v[mid + 1].y <= y0) lo = mid + 1; else hi = mid;
+      }
       active_.push_back(next_);
-      cursor_.push_back(ch[next_].first);
+      cursor_.push_back(lo);
     }
     ++next_;
   }
-  if (active_.empty()) return next_ < s_.chain_end;
+  if (active_.empty()) return next_ < s_->chain_end;
 
   spans_.clear();
   for (std::size_t i = 0; i < active_.size(); ++i) {
@@ -115,8 +132,11 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
     while (k + 1 < c.last && v[k + 1].y <= y0) ++k;
     Span s;
     s.chain = active_[i];
-    s.k = k;
+    s.k = s.cur = k;
     s.dir = c.dir;
+    s.sign = 0;
+    s.listed = false;
+    s.open_y = y0;
     s.ta = std::max(c.ymin, y0);
     s.tb = std::min(c.ymax, y1);
     if (s.tb <= s.ta) continue;
@@ -134,9 +154,9 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
   }
   if (spans_.empty()) return true;
 
-  if (s_.simple) {
+  if (s_->simple) {
     // |winding| <= 1: every chain is a boundary, its sign is dir times the inside winding.
-    for (const Span& s : spans_) emit(s, s.ta, s.tb, s.dir * s_.orient, sink);
+    for (const Span& s : spans_) emit(s, s.ta, s.tb, s.dir * s_->orient, sink);
     return true;
   }
 
@@ -148,39 +168,77 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
     if (s.tb < y1) events_.push_back(s.tb);
   }
   // Crossings between spans whose x ranges overlap (sweep over xmin).
-  order_.resize(spans_.size());
-  for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
-  std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return spans_[a].xmin < spans_[b].xmin || (spans_[a].xmin == spans_[b].xmin && a < b);
-  });
-  for (std::size_t i = 0; i < order_.size(); ++i) {
-    const Span& a = spans_[order_[i]];
-    for (std::size_t j = i + 1; j < order_.size() && spans_[order_[j]].xmin < a.xmax; ++j)
-      crossings(a, spans_[order_[j]]);
+  if (spans_.size() > 1) {
+    order_.resize(spans_.size());
+    for (std::uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return spans_[a].xmin < spans_[b].xmin || (spans_[a].xmin == spans_[b].xmin && a < b);
+    });
+    for (std::size_t i = 0; i < order_.size(); ++i) {
+      const Span& a = spans_[order_[i]];
+      for (std::size_t j = i + 1; j < order_.size() && spans_[order_[j]].xmin < a.xmax; ++j)
+        crossings(a, spans_[order_[j]]);
+    }
   }
-  std::sort(events_.begin(), events_.end());
-  events_.erase(std::unique(events_.begin(), events_.end()), events_.end());
+  if (events_.size() > 2) {
+    std::sort(events_.begin(), events_.end());
+    events_.erase(std::unique(events_.begin(), events_.end()), events_.end());
+  }
 
+  // Sub-strips between events. A span's boundary status is emitted only when it changes, so
+  // a boundary running through several sub-strips reaches the sink as one piece.
+  order_.clear();
   for (std::size_t e = 0; e + 1 < events_.size(); ++e) {
     const double ya = events_[e], yb = events_[e + 1];
-    if (!(yb > ya) || ya < y0 || yb > y1) continue;
+    if (!(yb > ya)) continue;
     const double ym = 0.5 * (ya + yb);
-    sorted_.clear();
-    for (std::uint32_t i = 0; i < spans_.size(); ++i) {
-      const Span& s = spans_[i];
-      if (s.ta <= ya && s.tb >= yb) {
-        std::size_t k = s.k;
-        sorted_.push_back({x_on(s, k, ym), i});
+    keyed_.clear();
+    for (std::uint32_t i : order_) {  // keep the previous order: nearly sorted already
+      Span& s = spans_[i];
+      if (s.tb >= yb) keyed_.push_back({x_on(s, s.cur, ym), i});
+      else {
+        s.listed = false;
+        if (s.sign != 0) emit(s, s.open_y, ya, s.sign, sink);
+        s.sign = 0;
       }
     }
-    std::sort(sorted_.begin(), sorted_.end());
-    int w = 0;
-    for (auto [x, i] : sorted_) {
-      const bool before = inside(w);
-      w += spans_[i].dir;
-      const bool after = inside(w);
-      if (before != after) emit(spans_[i], ya, yb, after ? 1.0 : -1.0, sink);
+    for (std::uint32_t i = 0; i < spans_.size(); ++i) {
+      Span& s = spans_[i];
+      if (!s.listed && s.ta <= ya && s.tb >= yb) {
+        s.listed = true;
+        keyed_.push_back({x_on(s, s.cur, ym), i});
+      }
     }
+    // insertion sort by (x, index): linear when the order barely changed
+    for (std::size_t a = 1; a < keyed_.size(); ++a) {
+      auto key = keyed_[a];
+      std::size_t b = a;
+      while (b > 0 && key < keyed_[b - 1]) {
+        keyed_[b] = keyed_[b - 1];
+        --b;
+      }
+      keyed_[b] = key;
+    }
+    order_.clear();
+    int w = 0;
+    for (auto [x, i] : keyed_) {
+      order_.push_back(i);
+      Span& s = spans_[i];
+      const bool before = inside(w);
+      w += s.dir;
+      const bool after = inside(w);
+      const int sign = before == after ? 0 : (after ? 1 : -1);
+      if (sign != s.sign) {
+        if (s.sign != 0) emit(s, s.open_y, ya, s.sign, sink);
+        s.sign = sign;
+        s.open_y = ya;
+      }
+    }
+  }
+  for (std::uint32_t i : order_) {
+    Span& s = spans_[i];
+    if (s.sign != 0) emit(s, s.open_y, std::min(s.tb, y1), s.sign, sink);
+    s.sign = 0;
   }
   return true;
 }

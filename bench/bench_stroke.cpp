@@ -1,0 +1,307 @@
+// Stroke rasterization: splinefig (one thread and all cores) against Cairo and AGG on the
+// workloads of issue 4, 1024x1024, opaque black on white, canvas cleared every iteration.
+//   A1, A3: 100,000 separate segments (each its own path, butt caps), width 1 and 3.
+//   B:      one open polyline of 1,000,000 points (a 3:4 Lissajous), width 1.5, round joins.
+//   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).
+// accuracy/<impl> renders random strokes and reports the coverage error against the exact
+// union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
+#include "../tests/renderer/union_oracle.hpp"
+
+#include <splinefig/renderer/renderer.hpp>
+
+#include <agg_conv_stroke.h>
+#include <agg_path_storage.h>
+#include <agg_pixfmt_rgba.h>
+#include <agg_rasterizer_scanline_aa.h>
+#include <agg_renderer_base.h>
+#include <agg_renderer_scanline.h>
+#include <agg_rendering_buffer.h>
+#include <agg_scanline_u.h>
+#include <benchmark/benchmark.h>
+#include <cairo.h>
+#include <sys/resource.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <thread>
+#include <vector>
+
+namespace sr = splinefig::render;
+
+namespace {
+
+constexpr int kSize = 1024;
+constexpr double kPi = 3.14159265358979323846;
+
+double frac(double v) { return v - std::floor(v); }
+
+double h01(std::uint64_t x) {  // splitmix64 finalizer -> [0, 1)
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  x ^= x >> 31;
+  return static_cast<double>(x >> 11) / 9007199254740992.0;
+}
+
+struct Path {
+  std::vector<sr::Vec2> pts;
+};
+
+struct Workload {
+  std::vector<Path> paths;
+  double width;
+  sr::Join join;
+  sr::Cap cap = sr::Cap::Butt;
+};
+
+Workload segments(double width) {
+  Workload w{{}, width, sr::Join::Miter};
+  w.paths.reserve(100000);
+  for (int i = 0; i < 100000; ++i) {
+    double x0 = kSize * frac(0.6180339887498949 * i), y0 = kSize * frac(0.7548776662466927 * i);
+    double a = 2 * kPi * frac(0.5698402909980532 * i), len = 5 + 45 * frac(0.3247179572447460 * i);
+    w.paths.push_back({{{x0, y0}, {x0 + len * std::cos(a), y0 + len * std::sin(a)}}});
+  }
+  return w;
+}
+
+Workload lissajous() {
+  Workload w{{}, 1.5, sr::Join::Round};
+  Path p;
+  p.pts.resize(1000000);
+  for (int k = 0; k < 1000000; ++k) {
+    double t = 2 * kPi * k / 999999.0;
+    p.pts[static_cast<std::size_t>(k)] = {512 + 480 * std::sin(3 * t + kPi / 2), 512 + 480 * std::sin(4 * t)};
+  }
+  w.paths.push_back(std::move(p));
+  return w;
+}
+
+Workload walks() {
+  Workload w{{}, 2.0, sr::Join::Miter};
+  w.paths.reserve(10000);
+  for (int p = 0; p < 10000; ++p) {
+    Path path;
+    sr::Vec2 q{kSize * frac(0.6180339887498949 * p), kSize * frac(0.7548776662466927 * p)};
+    path.pts.push_back(q);
+    for (int j = 1; j < 100; ++j) {
+      double a = 2 * kPi * h01(static_cast<std::uint64_t>(100 * p + j));
+      q = {q.x + 3 * std::cos(a), q.y + 3 * std::sin(a)};
+      path.pts.push_back(q);
+    }
+    w.paths.push_back(std::move(path));
+  }
+  return w;
+}
+
+const Workload& workload(char id) {
+  static const Workload a1 = segments(1), a3 = segments(3), b = lissajous(), c = walks();
+  switch (id) {
+    case '1': return a1;
+    case '3': return a3;
+    case 'B': return b;
+    default: return c;
+  }
+}
+
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+// ---- splinefig -------------------------------------------------------------------------
+sr::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
+                         sr::Color ink = {0, 0, 0, 1}) {
+  sr::Scene s(size, size, bg);
+  sr::StrokeStyle st;
+  st.width = w.width;
+  st.join = w.join;
+  st.cap = w.cap;
+  st.miter_limit = 4;
+  for (const Path& p : w.paths) s.stroke_polyline(p.pts, false, st, ink);
+  return sr::rasterize(s, threads);
+}
+
+// ---- Cairo -----------------------------------------------------------------------------
+struct CairoCanvas {
+  cairo_surface_t* surface;
+  cairo_t* cr;
+  explicit CairoCanvas(int size = kSize) {
+    surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, size, size);
+    cr = cairo_create(surface);
+  }
+  ~CairoCanvas() {
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+  }
+};
+
+void draw_cairo(CairoCanvas& c, const Workload& w, bool clear_white = true, double ink = 0) {
+  cairo_t* cr = c.cr;
+  cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
+  if (clear_white) cairo_set_source_rgba(cr, 1, 1, 1, 1); else cairo_set_source_rgba(cr, 0, 0, 0, 0);
+  cairo_paint(cr);
+  cairo_set_operator(cr, CAIRO_OPERATOR_OVER);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+  cairo_set_source_rgba(cr, ink, ink, ink, 1);
+  cairo_set_line_width(cr, w.width);
+  cairo_set_line_join(cr, w.join == sr::Join::Round ? CAIRO_LINE_JOIN_ROUND
+                          : w.join == sr::Join::Bevel ? CAIRO_LINE_JOIN_BEVEL : CAIRO_LINE_JOIN_MITER);
+  cairo_set_line_cap(cr, w.cap == sr::Cap::Round ? CAIRO_LINE_CAP_ROUND
+                         : w.cap == sr::Cap::Square ? CAIRO_LINE_CAP_SQUARE : CAIRO_LINE_CAP_BUTT);
+  cairo_set_miter_limit(cr, 4);
+  for (const Path& p : w.paths) {
+    cairo_move_to(cr, p.pts[0].x, p.pts[0].y);
+    for (std::size_t i = 1; i < p.pts.size(); ++i) cairo_line_to(cr, p.pts[i].x, p.pts[i].y);
+    cairo_stroke(cr);
+  }
+  cairo_surface_flush(c.surface);
+}
+
+// ---- AGG -------------------------------------------------------------------------------
+struct AggCanvas {
+  std::vector<unsigned char> buf;
+  agg::rendering_buffer rbuf;
+  agg::pixfmt_rgba32 pixf;
+  agg::renderer_base<agg::pixfmt_rgba32> ren;
+  explicit AggCanvas(int size = kSize)
+      : buf(static_cast<std::size_t>(size) * size * 4), rbuf(buf.data(), size, size, size * 4), pixf(rbuf), ren(pixf) {}
+};
+
+void draw_agg(AggCanvas& c, const Workload& w, bool clear_white = true, unsigned char ink = 0) {
+  c.ren.clear(clear_white ? agg::rgba8(255, 255, 255, 255) : agg::rgba8(0, 0, 0, 0));
+  agg::rasterizer_scanline_aa<> ras;
+  agg::scanline_u8 sl;
+  agg::renderer_scanline_aa_solid<agg::renderer_base<agg::pixfmt_rgba32>> solid(c.ren);
+  solid.color(agg::rgba8(ink, ink, ink, 255));
+  agg::path_storage path;
+  agg::conv_stroke<agg::path_storage> stroke(path);
+  stroke.width(w.width);
+  stroke.line_join(w.join == sr::Join::Round ? agg::round_join
+                   : w.join == sr::Join::Bevel ? agg::bevel_join : agg::miter_join_revert);
+  stroke.line_cap(w.cap == sr::Cap::Round ? agg::round_cap : w.cap == sr::Cap::Square ? agg::square_cap : agg::butt_cap);
+  stroke.miter_limit(4);
+  for (const Path& p : w.paths) {
+    path.remove_all();
+    path.move_to(p.pts[0].x, p.pts[0].y);
+    for (std::size_t i = 1; i < p.pts.size(); ++i) path.line_to(p.pts[i].x, p.pts[i].y);
+    ras.reset();
+    ras.add_path(stroke);
+    agg::render_scanlines(ras, sl, solid);
+  }
+}
+
+// ---- timed benchmarks ------------------------------------------------------------------
+void BM_splinefig(benchmark::State& state, char id, int threads) {
+  const Workload& w = workload(id);
+  for (auto _ : state) {
+    sr::Image img = draw_splinefig(w, threads);
+    benchmark::DoNotOptimize(img.rgba.data());
+  }
+  state.counters["peak_rss_MB"] = peak_rss_mb();
+}
+
+void BM_cairo(benchmark::State& state, char id) {
+  const Workload& w = workload(id);
+  CairoCanvas c;
+  for (auto _ : state) {
+    draw_cairo(c, w);
+    benchmark::DoNotOptimize(cairo_image_surface_get_data(c.surface));
+  }
+  state.counters["peak_rss_MB"] = peak_rss_mb();
+}
+
+void BM_agg(benchmark::State& state, char id) {
+  const Workload& w = workload(id);
+  AggCanvas c;
+  for (auto _ : state) {
+    draw_agg(c, w);
+    benchmark::DoNotOptimize(c.buf.data());
+  }
+  state.counters["peak_rss_MB"] = peak_rss_mb();
+}
+
+// ---- accuracy against the exact union oracle -------------------------------------------
+std::vector<std::pair<Workload, std::vector<double>>> accuracy_cases() {
+  std::vector<std::pair<Workload, std::vector<double>>> cases;
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> u(0, 1);
+  const sr::Join joins[] = {sr::Join::Miter, sr::Join::Round, sr::Join::Bevel};
+  const sr::Cap caps[] = {sr::Cap::Butt, sr::Cap::Round, sr::Cap::Square};
+  for (int k = 0; k < 27; ++k) {
+    Workload w{{}, std::exp(std::log(0.1) + (std::log(20) - std::log(0.1)) * u(rng)), joins[k % 3], caps[(k / 3) % 3]};
+    Path p;
+    const int n = k < 18 ? 2 + k % 4 : 20;
+    for (int i = 0; i < n; ++i) p.pts.push_back({6 + 28 * u(rng), 6 + 28 * u(rng)});
+    if (k >= 18) w.width = 0.3 + 2.5 * u(rng);
+    std::vector<oracle::P2> op;
+    for (auto q : p.pts) op.push_back({q.x, q.y});
+    auto pieces = oracle::stroke_pieces(op, false, w.width, static_cast<oracle::Join>(static_cast<int>(w.join)), 4,
+                                        static_cast<oracle::Cap>(static_cast<int>(w.cap)));
+    w.paths.push_back(std::move(p));
+    cases.push_back({std::move(w), oracle::union_coverage(pieces, 40, 40)});
+  }
+  return cases;
+}
+
+void BM_accuracy(benchmark::State& state, int impl) {
+  static const auto cases = accuracy_cases();
+  double max_err = 0, sum = 0;
+  std::size_t count = 0;
+  for (auto _ : state) {
+    max_err = 0; sum = 0; count = 0;
+    for (const auto& [w, want] : cases) {
+      std::vector<double> got(want.size());
+      if (impl == 0) {
+        sr::Image img = draw_splinefig(w, 1, 40, {0, 0, 0, 0}, {1, 1, 1, 1});
+        for (std::size_t i = 0; i < got.size(); ++i) got[i] = img.rgba[i * 4 + 3];
+      } else if (impl == 1) {
+        CairoCanvas c(40);
+        draw_cairo(c, w, false, 1);
+        const unsigned char* d = cairo_image_surface_get_data(c.surface);
+        const int stride = cairo_image_surface_get_stride(c.surface);
+        for (int y = 0; y < 40; ++y)
+          for (int x = 0; x < 40; ++x) got[static_cast<std::size_t>(y * 40 + x)] = d[y * stride + x * 4 + 3] / 255.0;
+      } else {
+        AggCanvas c(40);
+        draw_agg(c, w, false, 255);
+        for (std::size_t i = 0; i < got.size(); ++i) got[i] = c.buf[i * 4 + 3] / 255.0;
+      }
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        if (got[i] == 0 && want[i] == 0) continue;
+        double d = std::abs(got[i] - want[i]);
+        max_err = std::max(max_err, d);
+        sum += d;
+        ++count;
+      }
+    }
+  }
+  state.counters["max_err"] = max_err;
+  state.counters["mean_err"] = count ? sum / static_cast<double>(count) : 0;
+}
+
+void register_all() {
+  const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (auto [id, name] : {std::pair{'1', "A1"}, {'3', "A3"}, {'B', "B"}, {'C', "C"}}) {
+    std::string base = std::string("stroke/") + name + "/";
+    benchmark::RegisterBenchmark((base + "splinefig").c_str(), BM_splinefig, id, 1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_splinefig, id, all)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_cairo, id)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "agg").c_str(), BM_agg, id)->Unit(benchmark::kMillisecond);
+  }
+  benchmark::RegisterBenchmark("accuracy/splinefig", BM_accuracy, 0)->Iterations(1);
+  benchmark::RegisterBenchmark("accuracy/cairo", BM_accuracy, 1)->Iterations(1);
+  benchmark::RegisterBenchmark("accuracy/agg", BM_accuracy, 2)->Iterations(1);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
