@@ -202,8 +202,10 @@ ImageItem parse_image(TableReader& r, const ParseContext& ctx) {
 template <class F>
 static void collect(TableReader& r, std::string_view key, std::vector<std::pair<size_t, Item>>& out, F&& make) {
   int i = 0;
+  const toml::node* n = r.node(key);
+  const bool single = n && n->is_table();  // [key] rather than [[key]]
   for (const toml::table* t : r.tables(key)) {
-    TableReader sub(*t, r.file(), std::string(key) + "[" + std::to_string(i++) + "]");
+    TableReader sub(*t, r.file(), single ? std::string(key) : std::string(key) + "[" + std::to_string(i++) + "]");
     out.emplace_back(t->source().begin.line, make(sub, *t));
   }
 }

@@ -266,8 +266,10 @@ AxesSpec parse_axes(const toml::table& table, const std::string& path, const Par
   std::vector<std::pair<size_t, PlotElement>> elements;
   auto each = [&](std::string_view key, auto&& make) {
     int i = 0;
+    const toml::node* n = r.node(key);
+    const bool single = n && n->is_table();
     for (const toml::table* t : r.tables(key)) {
-      TableReader sub(*t, ctx.file, r.key_path(key) + "[" + std::to_string(i++) + "]");
+      TableReader sub(*t, ctx.file, single ? r.key_path(key) : r.key_path(key) + "[" + std::to_string(i++) + "]");
       elements.emplace_back(t->source().begin.line, PlotElement{make(sub)});
       sub.finish();
     }

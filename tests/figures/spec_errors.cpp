@@ -1,0 +1,121 @@
+// Bad figure specs: every one gives one line naming the file, the line and the key, and the
+// commands write no output file.
+#include <catch2/catch.hpp>
+
+#include <splinefig/figures/spec.hpp>
+
+#include "support.hpp"
+
+using splinefig::figures::parse_spec;
+using splinefig::figures::SpecFileError;
+
+namespace {
+
+// The message parse_spec throws for `text`, or "" if it parses.
+std::string error_of(const std::string& text) {
+  try {
+    parse_spec(text, "bad.toml");
+  } catch (const SpecFileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kAxes = "[canvas]\nwidth = 100\nheight = 80\n[axes]\nx_range = [0, 1]\ny_range = [0, 1]\n";
+
+}  // namespace
+
+TEST_CASE("bad specs name the file, the line and the key") {
+  struct Case {
+    std::string text, expect;  // expect: "bad.toml:LINE: KEY" prefix
+  } cases[] = {
+      {"[canvas]\nwidth = 100\ncolour = \"#fff\"\n", "bad.toml:3: canvas.colour: unknown key"},
+      {"[canvas]\nwidth = \"wide\"\n", "bad.toml:2: canvas.width: expected an integer"},
+      {"[[polyline]]\npoints = [[0, 0], [1, 1]]\nwidth = -1\n", "bad.toml:3: polyline[0].width: must not be negative"},
+      {"[[polyline]]\npoints = [[0, 0], [nan, 1]]\n", "bad.toml:2: polyline[0].points: expected a finite number, found nan"},
+      {"[[polyline]]\npoints = [[0, 0], [1, 1]]\ncolor = \"red\"\n", "bad.toml:3: polyline[0].color: \"red\" is not a hex colour"},
+      {"[[polyline]]\npoints = [[0, 0], [1, 1]]\ncolor = \"#12345\"\n", "bad.toml:3: polyline[0].color"},
+      {"[canvas]\nwidth = 40000\nheight = 10\n", "bad.toml:2: canvas.width: larger than 32768 px"},
+      {"[canvas]\nwidth = 20000\nheight = 20000\n", "bad.toml:3: canvas.height: canvas of 400000000 pixels is over the limit of 2^28"},
+      {"[[polyline]]\npoints = []\n", "bad.toml:2: polyline[0].points: empty polyline"},
+      {std::string(kAxes) + "[[axes.series]]\ncolor = \"#000000\"\n", "bad.toml:7: axes.series[0].points: a series without data"},
+      {std::string(kAxes) + "[[axes.series]]\nx = [1, 2]\ny = [1]\n", "bad.toml:9: axes.series[0].y: x has 2 values but y has 1"},
+      {"[axes]\nx_range = [1, 1]\n", "bad.toml:2: axes.x_range: x0 = x1"},
+      {std::string(kAxes) + "[[axes.kernel]]\nbasis = \"catmul-rom\"\n", "bad.toml:8: axes.kernel[0].basis: basis \"catmul-rom\""},
+      {std::string(kAxes) + "[[axes.curve]]\nknots = [[0, 0], [1, 1], [2, 0], [3, 1]]\nbasis = \"beta:b1=-1,b2=0\"\n",
+       "bad.toml:9: axes.curve[0].basis: basis \"beta:b1=-1,b2=0\""},
+      {std::string(kAxes) + "[[axes.curve]]\nknots = [[0, 0], [1, 1]]\n", "bad.toml:8: axes.curve[0].knots: 2 knots are too few"},
+      {std::string(kAxes) + "[[axes.curve]]\nknots = [[0, 0], [1, 1], [2, 0], [3, 1]]\nwidht = 2\n",
+       "bad.toml:9: axes.curve[0].widht: unknown key"},
+      {"[canvas]\nfilter = \"gauss\"\n", "bad.toml:2: canvas.filter: basis \"gauss\""},
+      {"[[text]]\nat = [1, 2]\ntext = \"c_{3\"\n", "bad.toml:3: text[0].text"},
+      {"[canvas]\nwidth = 10\n[canvas\n", "bad.toml:3"},
+      {"[layout]\nrows = 1\ncols = 1\n[[axes]]\ncell = [1, 0]\n", "bad.toml:4: axes.cell: [1, 0] is outside the 1x1 layout"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.text);
+    std::string msg = error_of(c.text);
+    CAPTURE(msg);
+    CHECK(msg.rfind(c.expect, 0) == 0);
+    CHECK(msg.find('\n') == std::string::npos);
+  }
+}
+
+TEST_CASE("good specs parse, keep document order and take the house defaults") {
+  auto spec = parse_spec(
+      "title = \"t\"\n[[text]]\nat = [1, 2]\ntext = \"a\"\n[[polyline]]\npoints = [[0, 0], [3, 4]]\n"
+      "dash = [2]\n[[text]]\nat = [3, 4]\ntext = \"b\"\n",
+      "good.toml");
+  REQUIRE(spec.items.size() == 3);
+  CHECK(std::holds_alternative<splinefig::figures::TextItem>(spec.items[0]));
+  CHECK(std::holds_alternative<splinefig::figures::PolylineItem>(spec.items[1]));
+  CHECK(std::get<splinefig::figures::TextItem>(spec.items[2]).text == "b");
+  const auto& pl = std::get<splinefig::figures::PolylineItem>(spec.items[1]);
+  CHECK(pl.pen.style.dashes == std::vector<double>{2, 2});  // an odd dash list repeats (SVG)
+  CHECK(pl.pen.style.width == 1.0);
+  CHECK(spec.canvas.width == 800);
+  CHECK(spec.canvas.height == 500);
+  CHECK(spec.name == "good");
+}
+
+TEST_CASE("splinefig render: a bad spec fails with one line and writes nothing") {
+  auto dir = figtest::scratch("render-bad");
+  auto spec = dir / "bad.toml";
+  std::ofstream(spec) << "[canvas]\nwidth = 64\nheight = 64\n[[polyline]]\npoints = [[0, 0], [1, 1]]\nwidth = -2\n";
+  auto out = dir / "out.png";
+  auto r = figtest::run(figtest::exe() + " render " + spec.string() + " -o " + out.string());
+  CHECK(r.code != 0);
+  CHECK(r.out == "splinefig render: " + spec.string() + ":6: polyline[0].width: must not be negative, found -2\n");
+  CHECK_FALSE(figtest::fs::exists(out));
+  CHECK(figtest::fs::directory_iterator(dir) != figtest::fs::directory_iterator());  // only bad.toml
+  int files = 0;
+  for ([[maybe_unused]] auto& e : figtest::fs::directory_iterator(dir)) ++files;
+  CHECK(files == 1);
+}
+
+TEST_CASE("splinefig render: bad flags and scales that make the canvas too large") {
+  auto dir = figtest::scratch("render-flags");
+  auto spec = dir / "ok.toml";
+  std::ofstream(spec) << "[canvas]\nwidth = 20000\nheight = 100\n";
+  auto r = figtest::run(figtest::exe() + " render " + spec.string() + " -o " + (dir / "x.jpg").string());
+  CHECK(r.code != 0);
+  CHECK(r.out.find("must end in .png or .exr") != std::string::npos);
+  r = figtest::run(figtest::exe() + " render " + spec.string() + " -o " + (dir / "x.png").string() + " --scale 2");
+  CHECK(r.code != 0);
+  CHECK(r.out.find("--scale: the scaled canvas 40000x200 is larger than 32768 px a side") != std::string::npos);
+  CHECK_FALSE(figtest::fs::exists(dir / "x.png"));
+  r = figtest::run(figtest::exe() + " render " + (dir / "missing.toml").string() + " -o " + (dir / "x.png").string());
+  CHECK(r.code != 0);
+  CHECK(r.out.find("missing.toml: cannot read the spec file") != std::string::npos);
+}
+
+TEST_CASE("splinefig figures: unknown names and formats are errors") {
+  auto dir = figtest::scratch("figures-bad");
+  auto r = figtest::run(figtest::exe() + " figures --out " + dir.string() + " --only nosuchfigure");
+  CHECK(r.code != 0);
+  CHECK(r.out.find("--only nosuchfigure: no such figure") != std::string::npos);
+  r = figtest::run(figtest::exe() + " figures --out " + dir.string() + " --only cbasis --format png,tiff");
+  CHECK(r.code != 0);
+  CHECK(r.out.find("\"tiff\" is not png or exr") != std::string::npos);
+  CHECK_FALSE(figtest::fs::exists(dir / "cbasis.png"));
+}
