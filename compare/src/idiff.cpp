@@ -136,7 +136,10 @@ bool locate(const Layout& L, std::size_t p0, std::size_t p1, float target, std::
   return false;
 }
 
-// ImageBufAlgo::compare's compare_value, value by value, in scanline order.
+// ImageBufAlgo::compare's compare_value (OpenImageIO 2.4), value by value, in scanline order:
+// a pair with exactly one NaN or one Inf (or Inf against NaN) sets the max error to Inf the first
+// time and is not counted; once the max error is Inf such pairs fall through, add NaN or Inf to
+// the sums and may make the running maximum NaN; a NaN error is never over a threshold.
 Metrics exact_pass(const Layout& L, float fail, float warn) {
   Metrics m;
   double total = 0.0, totalsq = 0.0;
@@ -165,17 +168,20 @@ Metrics exact_pass(const Layout& L, float fail, float warn) {
         m.max_error = float(f);
         m.max_x = px, m.max_y = py, m.max_c = c;
       }
-      if (!warned && !(f <= warn)) {
+      if (!warned && f > warn) {
         ++m.nwarn;
         warned = true;
       }
-      if (!failed && !(f <= fail)) {
+      if (!failed && f > fail) {
         ++m.nfail;
         failed = true;
       }
     }
     m.nvalues += std::uint64_t(L.nch);
   }
+  // idiff 2.4 merges per-block results with '>', so a block whose running maximum became NaN
+  // (a NaN pair after an infinite error) contributes no maximum: the whole image is one block.
+  if (std::isnan(m.max_error)) m.max_error = 0.0f, m.max_x = 0, m.max_y = 0, m.max_c = 0;
   m.mean_error = total / double(m.nvalues ? m.nvalues : 1);
   m.rms_error = std::sqrt(totalsq / double(m.nvalues ? m.nvalues : 1));
   m.psnr = 20.0 * std::log10(double(maxval) / m.rms_error);
