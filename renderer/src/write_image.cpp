@@ -72,6 +72,7 @@ void write_image(const Image& image, const std::string& path, const WriteOptions
   if (!options.description.empty()) spec.attribute("ImageDescription", options.description);
   if (png) {
     spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("oiio:UnassociatedAlpha", 1);  // our bytes are already straight alpha
   } else {
     spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("compression", "zip");

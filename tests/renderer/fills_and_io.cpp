@@ -1,0 +1,205 @@
+// Fill rules, disks, markers, dashes, colours, text, and image files.
+#include "coverage_helpers.hpp"
+#include "union_oracle.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <OpenImageIO/imageio.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace sr = splinefig::render;
+namespace fs = std::filesystem;
+
+namespace {
+double total(const std::vector<double>& c) {
+  double t = 0;
+  for (double v : c) t += v;
+  return t;
+}
+oracle::Poly rect(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+std::vector<sr::Vec2> to_vec(const oracle::Poly& p) {
+  std::vector<sr::Vec2> v;
+  for (auto q : p) v.push_back({q.x, q.y});
+  return v;
+}
+fs::path temp_dir() {
+  fs::path d = fs::temp_directory_path() / ("splinefig-renderer-test-" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+}  // namespace
+
+TEST_CASE("nonzero fills the union of overlapping contours, even-odd their symmetric difference") {
+  auto A = rect(3.3, 4.1, 20.6, 17.7), B = rect(11.2, 9.4, 27.9, 26.2), I = rect(11.2, 9.4, 20.6, 17.7);
+  auto uni = oracle::union_coverage({A, B}, 32, 32);
+  auto a = oracle::union_coverage({A}, 32, 32), b = oracle::union_coverage({B}, 32, 32), in = oracle::union_coverage({I}, 32, 32);
+  auto nonzero = testutil::rendered_coverage(32, 32, [&](sr::Scene& s) { s.fill_polygon({to_vec(A), to_vec(B)}, sr::FillRule::NonZero, {1, 1, 1, 1}); });
+  auto evenodd = testutil::rendered_coverage(32, 32, [&](sr::Scene& s) { s.fill_polygon({to_vec(A), to_vec(B)}, sr::FillRule::EvenOdd, {1, 1, 1, 1}); });
+  CHECK(testutil::compare(nonzero, uni).max <= 1e-6);
+  std::vector<double> xor_(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) xor_[i] = a[i] + b[i] - 2 * in[i];
+  CHECK(testutil::compare(evenodd, xor_).max <= 1e-6);
+  // B reversed: nonzero now also leaves the overlap empty (winding +1 - 1 = 0)
+  auto Br = to_vec(B);
+  std::reverse(Br.begin(), Br.end());
+  auto opposite = testutil::rendered_coverage(32, 32, [&](sr::Scene& s) { s.fill_polygon({to_vec(A), Br}, sr::FillRule::NonZero, {1, 1, 1, 1}); });
+  CHECK(testutil::compare(opposite, xor_).max <= 1e-6);
+}
+
+TEST_CASE("a pentagram: nonzero fills the centre, even-odd leaves it empty (exact areas)") {
+  std::vector<sr::Vec2> star;
+  const double R = 14, pi = 3.141592653589793;
+  for (int k = 0; k < 5; ++k) {
+    double a = -pi / 2 + k * 4 * pi / 5;
+    star.push_back({16 + R * std::cos(a), 16 + R * std::sin(a)});
+  }
+  // inner pentagon radius r = R cos(72)/cos(36); areas from the regular geometry
+  const double r = R * std::cos(2 * pi / 5) / std::cos(pi / 5);
+  const double pentagon = 2.5 * r * r * std::sin(2 * pi / 5);
+  const double star_area = 5 * R * r * std::sin(pi / 5);  // 10 triangles centre-tip-notch
+  auto nz = testutil::rendered_coverage(32, 32, [&](sr::Scene& s) { s.fill_polygon({star}, sr::FillRule::NonZero, {1, 1, 1, 1}); });
+  auto eo = testutil::rendered_coverage(32, 32, [&](sr::Scene& s) { s.fill_polygon({star}, sr::FillRule::EvenOdd, {1, 1, 1, 1}); });
+  CHECK(total(nz) == Approx(star_area).epsilon(1e-7));  // float32 pixels
+  CHECK(total(eo) == Approx(star_area - pentagon).epsilon(1e-7));
+}
+
+TEST_CASE("disks and markers have their exact areas") {
+  const double pi = 3.141592653589793;
+  auto disk = testutil::rendered_coverage(40, 40, [&](sr::Scene& s) { s.fill_circle({19.3, 20.8}, 13.7, {1, 1, 1, 1}); });
+  CHECK(total(disk) == Approx(pi * 13.7 * 13.7).epsilon(2e-5));
+  struct M { sr::Marker m; double area; };
+  const double sz = 11.5;
+  for (M m : {M{sr::Marker::Circle, pi * sz * sz / 4}, M{sr::Marker::Square, sz * sz}, M{sr::Marker::Diamond, sz * sz / 2},
+              M{sr::Marker::Plus, 7 * sz * sz / 16},
+              M{sr::Marker::Cross, (std::sqrt(0.5) - 1.0 / 16) * sz * sz}}) {  // arms reach the corners
+    auto c = testutil::rendered_coverage(24, 24, [&](sr::Scene& s) { s.marker(m.m, {12.2, 11.7}, sz, {1, 1, 1, 1}); });
+    INFO("marker " << static_cast<int>(m.m));
+    CHECK(total(c) == Approx(m.area).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("dashes: on-lengths of the pattern, offset applied, continuing across a joint") {
+  // Straight line of length 40 from x = 2, pattern {6, 3}, offset 2: dashes [0,4], [7,13],
+  // [16,22], [25,31], [34,40] -> on length 28, width 2, butt caps.
+  sr::StrokeStyle st;
+  st.width = 2;
+  st.dashes = {6, 3};
+  st.dash_offset = 2;
+  auto c = testutil::rendered_coverage(48, 12, [&](sr::Scene& s) { s.stroke_polyline(std::vector<sr::Vec2>{{2, 6}, {42, 6}}, false, st, {1, 1, 1, 1}); });
+  CHECK(total(c) == Approx(28 * 2).epsilon(1e-12));
+  // An L path (10 right, 10 down), pattern {8, 4}, offset -4: the dashes are [4, 12], which
+  // spans the joint (two rectangles and the miter), and [16, 20]; their pieces from the oracle.
+  st.dashes = {8, 4};
+  st.dash_offset = -4;
+  st.width = 3;
+  auto got = testutil::rendered_coverage(32, 32, [&](sr::Scene& s) {
+    s.stroke_polyline(std::vector<sr::Vec2>{{5.5, 5.5}, {15.5, 5.5}, {15.5, 15.5}}, false, st, {1, 1, 1, 1});
+  });
+  auto pieces = oracle::stroke_pieces({{9.5, 5.5}, {15.5, 5.5}, {15.5, 7.5}}, false, 3, oracle::Join::Miter, 4, oracle::Cap::Butt);
+  auto second = oracle::stroke_pieces({{15.5, 11.5}, {15.5, 15.5}}, false, 3, oracle::Join::Miter, 4, oracle::Cap::Butt);
+  pieces.insert(pieces.end(), second.begin(), second.end());
+  auto want = oracle::union_coverage(pieces, 32, 32);
+  CHECK(testutil::compare(got, want).max <= 1e-6);
+}
+
+TEST_CASE("hex colours are sRGB, decoded with the exact sRGB curve") {
+  auto c = sr::parse_hex_color("#ff8000");
+  REQUIRE(c);
+  CHECK(c->r == 1.0f);
+  CHECK(c->g == Approx(0.21586050).epsilon(1e-6));  // ((128/255 + 0.055)/1.055)^2.4
+  CHECK(c->b == 0.0f);
+  CHECK(c->a == 1.0f);
+  auto d = sr::parse_hex_color("#0000007F");
+  REQUIRE(d);
+  CHECK(d->a == Approx(127 / 255.0));
+  for (const char* bad : {"ff0000", "#ff00", "#gg0000", "#ff00001", "", "#ff0000 "}) CHECK_FALSE(sr::parse_hex_color(bad));
+  CHECK(sr::srgb_to_linear(0.04045f) == Approx(0.04045 / 12.92));
+  CHECK(sr::linear_to_srgb(0.5f) == Approx(0.735356983).epsilon(1e-6));
+}
+
+TEST_CASE("PNG is 8-bit sRGB with straight alpha, EXR float linear premultiplied, both with metadata") {
+  auto dir = temp_dir();
+  sr::Image img;
+  img.width = 2;
+  img.height = 1;
+  img.rgba = {0.5f, 0.5f, 0.5f, 1.0f, 0.25f, 0.0f, 0.0f, 0.5f};  // premultiplied
+  sr::write_image(img, (dir / "a.png").string(), {"", "test spec"});
+  sr::write_image(img, (dir / "a.exr").string());
+  OIIO::ImageSpec raw;
+  raw.attribute("oiio:UnassociatedAlpha", 1);  // read the stored bytes, do not premultiply
+  auto in = OIIO::ImageInput::open((dir / "a.png").string(), &raw);
+  REQUIRE(in);
+  CHECK(in->spec().format == OIIO::TypeDesc::UINT8);
+  CHECK(in->spec().get_string_attribute("Software").find("splinefig") != std::string::npos);
+  CHECK(in->spec().get_string_attribute("ImageDescription") == "test spec");
+  unsigned char px[8];
+  REQUIRE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, px));
+  in->close();
+  // linear 0.5 -> sRGB 0.7354 -> 188; straight red 0.25/0.5 = 0.5 -> 188, alpha 128
+  CHECK(int(px[0]) == 188);
+  CHECK(int(px[3]) == 255);
+  CHECK(int(px[4]) == 188);
+  CHECK(int(px[5]) == 0);
+  CHECK(int(px[7]) == 128);
+  auto ex = OIIO::ImageInput::open((dir / "a.exr").string());
+  REQUIRE(ex);
+  float f[8];
+  REQUIRE(ex->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, f));
+  CHECK(ex->spec().format == OIIO::TypeDesc::FLOAT);
+  ex->close();
+  for (int i = 0; i < 8; ++i) CHECK(f[i] == img.rgba[static_cast<std::size_t>(i)]);
+  // no temporary files are left beside the targets
+  int files = 0;
+  for (auto& e : fs::directory_iterator(dir)) { (void)e; ++files; }
+  CHECK(files == 2);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a failed write names the path and leaves no file") {
+  auto dir = temp_dir();
+  sr::Image img;
+  img.width = img.height = 1;
+  img.rgba = {0, 0, 0, 1};
+  auto target = dir / "missing" / "x.png";
+  REQUIRE_THROWS_WITH(sr::write_image(img, target.string()), Catch::Contains(target.string()));
+  REQUIRE_THROWS_WITH(sr::write_image(img, (dir / "x.jpg").string()), Catch::Contains("x.jpg"));
+  // an existing file is replaced only by a complete one: writing over it keeps it readable
+  auto good = dir / "y.png";
+  sr::write_image(img, good.string());
+  sr::Image bad;  // no pixels: rejected before anything is written
+  REQUIRE_THROWS(sr::write_image(bad, good.string()));
+  REQUIRE(OIIO::ImageInput::open(good.string()));
+  int files = 0;
+  for (auto& e : fs::directory_iterator(dir)) { (void)e; ++files; }
+  CHECK(files == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("text: measure_text grows with the string, render_text draws at the anchor") {
+  sr::TextStyle st;
+  st.size = 16;
+  auto a = sr::measure_text("M", st), b = sr::measure_text("MMMM", st);
+  CHECK(a.width > 5);
+  CHECK(b.width > 3 * a.width);
+  CHECK(a.ascent > 8);
+  CHECK(a.ascent < 16);
+  for (auto [h, v] : {std::pair{sr::HAlign::Left, sr::VAlign::Baseline}, {sr::HAlign::Center, sr::VAlign::Middle},
+                      {sr::HAlign::Right, sr::VAlign::Top}}) {
+    st.halign = h;
+    st.valign = v;
+    st.color = {1, 1, 1, 1};
+    auto c = testutil::rendered_coverage(80, 40, [&](sr::Scene& s) { s.text("Hm", {40, 20}, st); });
+    // ink box relative to the anchor
+    int x0 = 80, x1 = -1, y0 = 40, y1 = -1;
+    for (int y = 0; y < 40; ++y)
+      for (int x = 0; x < 80; ++x)
+        if (c[y * 80 + x] > 0.5) { x0 = std::min(x0, x); x1 = std::max(x1, x); y0 = std::min(y0, y); y1 = std::max(y1, y); }
+    REQUIRE(x1 >= 0);
+    INFO("align " << static_cast<int>(h) << "," << static_cast<int>(v) << " ink " << x0 << ".." << x1 << " x " << y0 << ".." << y1);
+    if (h == sr::HAlign::Left) { CHECK(std::abs(x0 - 40) <= 2); CHECK(std::abs(y1 - 19) <= 1); }
+    if (h == sr::HAlign::Center) { CHECK(std::abs((x0 + x1) / 2 - 40) <= 2); CHECK(std::abs((y0 + y1) / 2 - 20) <= 2); }
+    if (h == sr::HAlign::Right) { CHECK(std::abs(x1 - 39) <= 2); CHECK(std::abs(y0 - 20) <= 1); }
+  }
+}
