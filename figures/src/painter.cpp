@@ -74,8 +74,10 @@ render::TextExtent measure_plain(const std::string& text, double size, bool bold
 render::TextExtent Painter::measure(const std::string& s, const Font& f) const {
   auto key = std::make_tuple(s, f.size, f.bold);
   if (auto it = cache_.find(key); it != cache_.end()) return it->second;
-  RichText rt = set_text(s, f.size * scale_, [&](const std::string& t, double size) { return measure_plain(t, size, f.bold); });
-  render::TextExtent e{rt.width / scale_, rt.ascent / scale_, rt.descent / scale_};
+  // Measured at 1x whatever the output scale, so that the layout (and every pixel box)
+  // scales exactly; drawing aligns each label with its extent at the output size.
+  RichText rt = set_text(s, f.size, [&](const std::string& t, double size) { return measure_plain(t, size, f.bold); });
+  render::TextExtent e{rt.width, rt.ascent, rt.descent};
   cache_[key] = e;
   return e;
 }

@@ -58,7 +58,7 @@ class Painter {
   void text(std::string s, Vec2 at, const Font& f, TextAnchor a);
   void image(Raster r, double x0, double y0, double x1, double y1);
 
-  // Extent of a label (rich_text.hpp markup) in layout units, measured at the output size.
+  // Extent of a label (rich_text.hpp markup) in layout units, measured at 1x.
   render::TextExtent measure(const std::string& s, const Font& f) const;
 
   const std::vector<Op>& ops() const { return ops_; }
