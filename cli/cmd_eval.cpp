@@ -40,8 +40,14 @@ Points sample_companion(const Options& o, const Curve& c, int grain, int derivat
   }
 }
 
-// Output points above this many are refused rather than exhausting memory.
-constexpr long long max_points = 1LL << 28;
+// Output above this many numbers (about 1.5 GB of text) is refused rather than exhausting memory.
+constexpr long long max_numbers = 1LL << 26;
+
+void check_size(long double points, int dim, const std::string& flag) {
+  if (points * dim > max_numbers)
+    throw Failure(flag + ": " + std::to_string(static_cast<long long>(points)) + " points of dimension " +
+                  std::to_string(dim) + " would be more than " + std::to_string(max_numbers) + " numbers");
+}
 
 int run(const Options& o) {
   Basis b;
@@ -63,7 +69,7 @@ int run(const Options& o) {
   const bool by_length = o.spacing != "parameter";
   if (by_length && o.count.empty()) throw Failure("--spacing " + o.spacing + " needs --count N");
   if (!by_length && !o.count.empty()) throw Failure("--count needs --spacing arclength (or polygon)");
-  const long long count = by_length ? cli::parse_integer(o.count, "--count", 2, max_points) : 0;
+  const long long count = by_length ? cli::parse_integer(o.count, "--count", 2, max_numbers) : 0;
   if (!parse_knot_spacing(o.knot_spacing))
     throw Failure("--knot-spacing: unknown spacing '" + o.knot_spacing + "' (known: uniform, chordal, centripetal)");
   const bool companion = o.knot_spacing != "uniform" || !o.betas.empty();
@@ -79,16 +85,17 @@ int run(const Options& o) {
     throw Failure(std::string("stdin: ") + e.what());
   }
 
+  const long double sampled = static_cast<long double>(c.segments()) * grain + 1;
   Points out;
   if (o.spacing == "arclength") {
+    check_size(count, c.dim(), "--count " + o.count);
     out = evaluate_at(c, evenly_spaced_parameters(c, static_cast<std::size_t>(count)), derivative);
   } else if (o.spacing == "polygon") {
-    if (static_cast<long double>(c.segments()) * grain > max_points) throw Failure("--grain: too many points");
+    check_size(count, c.dim(), "--count " + o.count);
+    check_size(sampled, c.dim(), "--grain " + o.grain);
     out = evaluate_at(c, polygon_evenly_spaced_parameters(c, grain, static_cast<std::size_t>(count)), derivative);
   } else {
-    if (static_cast<long double>(c.segments()) * grain + 1 > max_points)
-      throw Failure("--grain " + o.grain + ": " + std::to_string(c.segments()) + " pieces would give more than " +
-                    std::to_string(max_points) + " points");
+    check_size(sampled, c.dim(), "--grain " + o.grain);
     out = companion ? sample_companion(o, c, grain, derivative) : sample(c, grain, derivative);
   }
   cli::write_stdout(cli::format_points(out));

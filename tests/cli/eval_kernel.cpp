@@ -158,6 +158,8 @@ TEST_CASE("eval refuses output it cannot hold and reports a failed write") {
   std::string many;
   for (int i = 0; i < 100; ++i) many += std::to_string(i) + "," + std::to_string(i % 7) + "\n";
   check_fails({"eval", "--basis", "catmull-rom", "--grain", "16777216"}, many, "more than");
+  check_fails({"eval", "--basis", "catmull-rom", "--spacing", "arclength", "--count", "50000000"}, many,
+              "--count 50000000: 50000000 points of dimension 2 would be more than");
   const auto r = run({"eval", "--basis", "catmull-rom"}, knots5, "/dev/full");
   CHECK(r.code != 0);
   CHECK(count_lines(r.err) == 1);
