@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cstring>
+#include <xmmintrin.h>
 #include <limits>
 #include <thread>
 
@@ -19,16 +21,18 @@ namespace splinefig {
 namespace {
 
 typedef float v4 __attribute__((vector_size(16)));
+typedef float v8 __attribute__((vector_size(32)));
 
 #define SPLINEFIG_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 
 // out[i*C + c] = sum_t w[i*T + t] ext[(first[i] - lo + t)*C + c] for C = 3 or 4. `ext` has 4
 // floats of slack at its end; all but the last pixel are stored with one 4-wide store (for C = 3
-// its fourth lane is overwritten by the next pixel).
-SPLINEFIG_CLONES
-void horizontal_v4(const float* ext, const long* first, long lo, const float* w, int taps, int dst,
-                   int C, float* out) {
-  for (int i = 0; i < dst; ++i) {
+// its fourth lane is overwritten by the next pixel). TAPS > 0 fixes the tap count at compile time.
+template <int TAPS>
+inline void horizontal_v4_impl(const float* ext, const long* first, long lo, const float* w, int taps, int dst,
+                               int C, float* out) {
+  if (TAPS > 0) taps = TAPS;
+  auto pixel = [&](int i) {
     const float* base = ext + (first[i] - lo) * C;
     const float* wi = w + static_cast<long>(i) * taps;
     v4 acc = {0, 0, 0, 0};
@@ -37,8 +41,23 @@ void horizontal_v4(const float* ext, const long* first, long lo, const float* w,
       std::memcpy(&v, base + t * C, sizeof v);
       acc += wi[t] * v;
     }
-    std::memcpy(out + static_cast<long>(i) * C, &acc, (i + 1 < dst ? 4 : C) * sizeof(float));
+    return acc;
+  };
+  for (int i = 0; i + 1 < dst; ++i) {
+    const v4 acc = pixel(i);
+    std::memcpy(out + static_cast<long>(i) * C, &acc, sizeof acc);
   }
+  const v4 last = pixel(dst - 1);
+  std::memcpy(out + static_cast<long>(dst - 1) * C, &last, static_cast<size_t>(C) * sizeof(float));
+}
+
+SPLINEFIG_CLONES
+void horizontal_v4(const float* ext, const long* first, long lo, const float* w, int taps, int dst, int C,
+                   float* out) {
+  if (taps == 4)
+    horizontal_v4_impl<4>(ext, first, lo, w, taps, dst, C, out);
+  else
+    horizontal_v4_impl<0>(ext, first, lo, w, taps, dst, C, out);
 }
 
 SPLINEFIG_CLONES
@@ -54,43 +73,131 @@ void horizontal_any(const float* ext, const long* first, long lo, const float* w
   }
 }
 
-// out[k] = sum_t w[t] rows[t][k] for k < n; a null row is black and adds nothing.
+// out[k] = sum_t w[t] rows[t][k] for k < n (black rows already left out). Four 8-wide
+// accumulators stay in registers across the taps; `stream` writes the output with
+// non-temporal stores, which skip reading the destination into the cache first (worth it only
+// for outputs far larger than the cache).
 SPLINEFIG_CLONES
-void vertical(const float* const* rows, const float* w, int taps, size_t n, float* __restrict out) {
-  constexpr size_t block = 512;
-  float acc[block];
-  for (size_t k0 = 0; k0 < n; k0 += block) {
-    const size_t len = std::min(block, n - k0);
-    for (size_t k = 0; k < len; ++k) acc[k] = 0;
-    for (int t = 0; t < taps; ++t) {
-      const float* __restrict r = rows[t];
-      if (!r) continue;
-      const float wt = w[t];
-      for (size_t k = 0; k < len; ++k) acc[k] += wt * r[k0 + k];
+void vertical(const float* const* rows, const float* w, int taps, size_t n, float* __restrict out, bool stream) {
+  size_t k = 0;
+  if (stream)  // align the output to 16 bytes for the streaming stores
+    for (; k < n && (reinterpret_cast<uintptr_t>(out + k) & 15) != 0; ++k) {
+      float acc = 0;
+      for (int t = 0; t < taps; ++t) acc += w[t] * rows[t][k];
+      out[k] = acc;
     }
-    std::memcpy(out + k0, acc, len * sizeof(float));
+  for (; k + 32 <= n; k += 32) {
+    v8 a0 = {}, a1 = {}, a2 = {}, a3 = {};
+    for (int t = 0; t < taps; ++t) {
+      const float* r = rows[t] + k;
+      const float wt = w[t];
+      v8 x0, x1, x2, x3;
+      std::memcpy(&x0, r, sizeof x0);
+      std::memcpy(&x1, r + 8, sizeof x1);
+      std::memcpy(&x2, r + 16, sizeof x2);
+      std::memcpy(&x3, r + 24, sizeof x3);
+      a0 += wt * x0;
+      a1 += wt * x1;
+      a2 += wt * x2;
+      a3 += wt * x3;
+    }
+    if (stream) {
+      const v8 acc[4] = {a0, a1, a2, a3};
+      for (int q = 0; q < 8; ++q) {
+        __m128 v;
+        std::memcpy(&v, reinterpret_cast<const float*>(acc) + 4 * q, sizeof v);
+        _mm_stream_ps(out + k + 4 * q, v);
+      }
+    } else {
+      std::memcpy(out + k, &a0, sizeof a0);
+      std::memcpy(out + k + 8, &a1, sizeof a1);
+      std::memcpy(out + k + 16, &a2, sizeof a2);
+      std::memcpy(out + k + 24, &a3, sizeof a3);
+    }
+  }
+  for (; k < n; ++k) {
+    float acc = 0;
+    for (int t = 0; t < taps; ++t) acc += w[t] * rows[t][k];
+    out[k] = acc;
   }
 }
 
-void horizontal(const float* ext, const AxisWeights& ax, int C, float* out) {
+// Outputs [i0, i1) of the row, reading extended positions from `base`, which holds position
+// base_lo at base[0].
+void horizontal(const float* base, long base_lo, const AxisWeights& ax, int i0, int i1, int C, float* out) {
+  if (i1 <= i0) return;
+  const long* first = ax.first.data() + i0;
+  const float* w = ax.w.data() + static_cast<size_t>(i0) * ax.taps;
+  float* o = out + static_cast<long>(i0) * C;
   if (C == 3 || C == 4)
-    horizontal_v4(ext, ax.first.data(), ax.lo, ax.w.data(), ax.taps, ax.dst, C, out);
+    horizontal_v4(base, first, base_lo, w, ax.taps, i1 - i0, C, o);
   else
-    horizontal_any(ext, ax.first.data(), ax.lo, ax.w.data(), ax.taps, ax.dst, C, out);
+    horizontal_any(base, first, base_lo, w, ax.taps, i1 - i0, C, o);
 }
 
-// Fills the extension positions lo..-1 and S..hi of `ext` (position p at ext[(p - lo)*C]),
-// whose positions 0..S-1 already hold the row.
-void extend(float* ext, long lo, long hi, int S, int C, Edge e) {
+// Positions lo..hi of a row extended by the edge mode, into buf (4 floats of slack after).
+void fill_extended(const float* row, long lo, long hi, int S, int C, Edge e, float* buf) {
   for (long p = lo; p <= hi; ++p) {
-    if (p >= 0 && p < S) continue;
+    float* d = buf + (p - lo) * C;
+    const long q = edge_index(p, S, e);
+    if (q < 0)
+      std::fill(d, d + C, 0.0f);
+    else
+      std::memcpy(d, row + q * C, static_cast<size_t>(C) * sizeof(float));
+  }
+}
+
+// Fills the extension positions lo..-1 and S..hi of a full extended row `ext` (position p at
+// ext[(p - lo)*C]) whose positions 0..S-1 already hold the row.
+void extend(float* ext, long lo, long hi, int S, int C, Edge e) {
+  auto fill = [&](long p) {
     float* d = ext + (p - lo) * C;
     const long q = edge_index(p, S, e);
     if (q < 0)
       std::fill(d, d + C, 0.0f);
     else
       std::memcpy(d, ext + (q - lo) * C, static_cast<size_t>(C) * sizeof(float));
-  }
+  };
+  for (long p = lo; p < 0 && p <= hi; ++p) fill(p);
+  for (long p = std::max<long>(S, lo); p <= hi; ++p) fill(p);
+}
+
+// Which outputs of a row can read the source row in place: those whose taps (and, for the
+// 4-wide loads of C = 3, one float more) lie inside it. first[] is close to monotone, so they
+// normally form one run [i0, i1), the few outputs at each end reading small extended copies of
+// positions [left_lo, left_hi] and [right_lo, right_hi]; otherwise the whole row is copied.
+struct RowSplit {
+  bool direct = false;
+  int i0 = 0, i1 = 0;
+  long left_lo = 0, left_hi = -1, right_lo = 0, right_hi = -1;
+};
+
+RowSplit split_row(const AxisWeights& ax, int C) {
+  RowSplit r;
+  const long slack = C == 3 ? 1 : 0;
+  auto inside = [&](int i) {
+    const long f = ax.first[static_cast<size_t>(i)];
+    return f >= 0 && f + ax.taps + slack <= ax.src;
+  };
+  int i = 0;
+  while (i < ax.dst && !inside(i)) ++i;
+  r.i0 = i;
+  while (i < ax.dst && inside(i)) ++i;
+  r.i1 = i;
+  for (; i < ax.dst; ++i)
+    if (inside(i)) return r;  // not one run
+  if (r.i1 == r.i0) return r;
+  r.direct = true;
+  auto range = [&](int a, int b, long& lo, long& hi) {
+    for (int k = a; k < b; ++k) {
+      lo = k == a ? ax.first[static_cast<size_t>(k)] : std::min(lo, ax.first[static_cast<size_t>(k)]);
+      hi = k == a ? ax.first[static_cast<size_t>(k)] + ax.taps - 1
+                  : std::max(hi, ax.first[static_cast<size_t>(k)] + ax.taps - 1);
+    }
+  };
+  range(0, r.i0, r.left_lo, r.left_hi);
+  range(r.i1, ax.dst, r.right_lo, r.right_hi);
+  return r;
 }
 
 template <class F>
@@ -111,14 +218,62 @@ struct Plan {
   AxisWeights ax, ay;
   Edge edge;
   int C;
+  bool stream;  // the output is far larger than the caches
+  RowSplit split;
   // The extended row holds positions ext_lo() .. ext_hi(), plus 4 floats of slack.
   long ext_lo() const { return std::min(ax.lo, 0L); }
   long ext_hi() const { return std::max(ax.hi, static_cast<long>(src.width) - 1); }
   size_t ext_len() const { return static_cast<size_t>(ext_hi() - ext_lo() + 1) * C + 4; }
 };
 
+// The source rows output row y reads, black ones left out, with their weights.
+struct Taps {
+  std::vector<const float*> rows;
+  std::vector<float> w;
+  std::vector<long> pos;  // extended positions
+  void gather(const Plan& p, int y) {
+    rows.clear();
+    w.clear();
+    pos.clear();
+    const int Ty = p.ay.taps;
+    for (int t = 0; t < Ty; ++t) {
+      const long at = p.ay.first[static_cast<size_t>(y)] + t;
+      const float wt = p.ay.w[static_cast<size_t>(y) * Ty + t];
+      const long r = edge_index(at, p.src.height, p.edge);
+      if (r < 0 || wt == 0) continue;
+      rows.push_back(p.src.row(static_cast<int>(r)));
+      w.push_back(wt);
+      pos.push_back(at);
+    }
+  }
+};
+
+// One source row filtered horizontally into out (dst.width pixels); ext is scratch of ext_len().
+void filter_row(const Plan& p, const float* row, float* ext, float* out) {
+  const int C = p.C, S = p.src.width;
+  const RowSplit& r = p.split;
+  if (!r.direct) {
+    const long lo = p.ext_lo();
+    std::memcpy(ext + (0 - lo) * C, row, p.src.row_stride() * sizeof(float));
+    extend(ext, lo, p.ext_hi(), S, C, p.edge);
+    horizontal(ext, lo, p.ax, 0, p.ax.dst, C, out);
+    return;
+  }
+  // The interior reads the row in place; each end reads its own small extended copy. Each
+  // call stores its last pixel with exactly C floats, so the three runs never overlap.
+  if (r.i0 > 0) {
+    fill_extended(row, r.left_lo, r.left_hi, S, C, p.edge, ext);
+    horizontal(ext, r.left_lo, p.ax, 0, r.i0, C, out);
+  }
+  if (r.i1 < p.ax.dst) {
+    fill_extended(row, r.right_lo, r.right_hi, S, C, p.edge, ext);
+    horizontal(ext, r.right_lo, p.ax, r.i1, p.ax.dst, C, out);
+  }
+  horizontal(row, 0, p.ax, r.i0, r.i1, C, out);
+}
+
 void horizontal_first(const Plan& p, int threads) {
-  const int C = p.C, Dy = p.dst.height, Ty = p.ay.taps;
+  const int Dy = p.dst.height, Ty = p.ay.taps;
   const size_t drow = p.dst.row_stride();
   const int chunks = threads == 1 ? 1 : std::min(Dy, threads * 4);
   parallel_chunks(chunks, threads, [&](int chunk) {
@@ -130,49 +285,39 @@ void horizontal_first(const Plan& p, int threads) {
     // rows, so a window never evicts its own rows (keying by source row would: under wrap the
     // rows S-2 and 0 can share a slot).
     std::vector<long> held(static_cast<size_t>(Ty), std::numeric_limits<long>::min());
-    std::vector<const float*> rows(static_cast<size_t>(Ty));
-    const long lo = p.ext_lo();
+    Taps taps;
     for (int y = y0; y < y1; ++y) {
-      for (int t = 0; t < Ty; ++t) {
-        const long pos = p.ay.first[static_cast<size_t>(y)] + t;
-        const long r = edge_index(pos, p.src.height, p.edge);
-        if (r < 0) {
-          rows[static_cast<size_t>(t)] = nullptr;
-          continue;
-        }
+      taps.gather(p, y);
+      for (size_t t = 0; t < taps.rows.size(); ++t) {
+        const long pos = taps.pos[t];
         const size_t slot = static_cast<size_t>(((pos % Ty) + Ty) % Ty);
         float* h = ring.data() + slot * (drow + 4);
         if (held[slot] != pos) {
-          std::memcpy(ext.data() + (0 - lo) * C, p.src.row(static_cast<int>(r)), p.src.row_stride() * sizeof(float));
-          extend(ext.data(), lo, p.ext_hi(), p.src.width, C, p.edge);
-          horizontal(ext.data() + (p.ax.lo - lo) * C, p.ax, C, h);
+          filter_row(p, taps.rows[t], ext.data(), h);
           held[slot] = pos;
         }
-        rows[static_cast<size_t>(t)] = h;
+        taps.rows[t] = h;
       }
-      vertical(rows.data(), p.ay.w.data() + static_cast<size_t>(y) * Ty, Ty, drow, p.dst.row(y));
+      vertical(taps.rows.data(), taps.w.data(), static_cast<int>(taps.rows.size()), drow, p.dst.row(y), p.stream);
     }
   });
 }
 
 void vertical_first(const Plan& p, int threads) {
-  const int C = p.C, Dy = p.dst.height, Ty = p.ay.taps;
+  const int C = p.C, Dy = p.dst.height;
   const int chunks = threads == 1 ? 1 : std::min(Dy, threads * 4);
   parallel_chunks(chunks, threads, [&](int chunk) {
     const int y0 = static_cast<int>(static_cast<long>(Dy) * chunk / chunks);
     const int y1 = static_cast<int>(static_cast<long>(Dy) * (chunk + 1) / chunks);
     std::vector<float> ext(p.ext_len());
-    std::vector<const float*> rows(static_cast<size_t>(Ty));
+    Taps taps;
     const long lo = p.ext_lo();
     for (int y = y0; y < y1; ++y) {
-      for (int t = 0; t < Ty; ++t) {
-        const long r = edge_index(p.ay.first[static_cast<size_t>(y)] + t, p.src.height, p.edge);
-        rows[static_cast<size_t>(t)] = r < 0 ? nullptr : p.src.row(static_cast<int>(r));
-      }
-      vertical(rows.data(), p.ay.w.data() + static_cast<size_t>(y) * Ty, Ty, p.src.row_stride(),
-               ext.data() + (0 - lo) * C);
+      taps.gather(p, y);
+      vertical(taps.rows.data(), taps.w.data(), static_cast<int>(taps.rows.size()), p.src.row_stride(),
+               ext.data() + (0 - lo) * C, false);
       extend(ext.data(), lo, p.ext_hi(), p.src.width, C, p.edge);
-      horizontal(ext.data() + (p.ax.lo - lo) * C, p.ax, C, p.dst.row(y));
+      horizontal(ext.data(), lo, p.ax, 0, p.ax.dst, C, p.dst.row(y));
     }
   });
 }
@@ -203,7 +348,9 @@ void resample_into(const Image& src_in, Image& dst, const Filter& f, const Resam
     src = &coefficients;
   }
   Plan p{*src, dst, axis_weights(f, src->width, dst.width, opt.edge),
-         axis_weights(f, src->height, dst.height, opt.edge), opt.edge, src->channels};
+         axis_weights(f, src->height, dst.height, opt.edge), opt.edge, src->channels,
+         dst.pixels.size() * sizeof(float) > (size_t(32) << 20), {}};
+  p.split = split_row(p.ax, p.C);
   // Multiply-adds, in units of a 4-wide horizontal tap (see the top of this file).
   const double C = p.C, hx = p.ax.taps * (C <= 4 ? 1.0 : C / 4), vy = p.ay.taps * C / 8;
   const double used_rows = std::min<double>(src->height, double(p.ay.hi - p.ay.lo + 1));
