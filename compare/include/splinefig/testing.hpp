@@ -102,13 +102,13 @@ class ReferenceMatcher : public Catch::MatcherBase<compare::Image> {
     const fs::path ref(m_reference);
     const std::string stem = (fs::path(dir) / ref.stem()).string();
     const std::string ext = ref.extension().string();
-    fs::create_directories(dir);
     compare::LoadOptions lo;
     lo.linear = m_tolerance.linear;
     compare::Image expected;
     try {
       expected = compare::load_image(m_reference, lo);
     } catch (const compare::UnreadableImage& e) {
+      fs::create_directories(dir);
       compare::write_image(stem + ".actual" + ext, actual);
       m_message = std::string("matches reference: cannot read it (") + e.what() +
                   "); run with SPLINEFIG_UPDATE_REFERENCES=1 to create it. Actual image: " + stem + ".actual" + ext;
@@ -133,6 +133,7 @@ class ReferenceMatcher : public Catch::MatcherBase<compare::Image> {
     }
     const float m = c.metrics.max_error;
     const float scale = m > 0.0f && std::isfinite(m) ? 1.0f / m : 1.0f;
+    fs::create_directories(dir);
     compare::write_image(stem + ".actual" + ext, actual);
     compare::write_image(stem + ".diff.png", compare::difference_image(c.pa, c.pb, scale));
     compare::write_image(stem + ".triptych.png", compare::triptych(c.pa, c.pb, scale));
