@@ -102,6 +102,7 @@ void ChainBuilder::end_chain() {
     c.xmin = std::min(c.xmin, v[k].x);
     c.xmax = std::max(c.xmax, v[k].x);
   }
+  if (g_.chains.size() == g_.chains.capacity()) reserve_huge(g_.chains, std::max<std::size_t>(64, 2 * g_.chains.capacity()));
   g_.chains.push_back(c);
 }
 

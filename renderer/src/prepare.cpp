@@ -68,7 +68,7 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
   out.color[3] = a;
   if (it.kind == K::Text) {
     out.is_text = true;
-    out.mask = text_mask(it.text, it.centre, it.text_style, canvas_w, canvas_h);
+    out.mask = text_mask(it.text->text, it.centre, it.text->style, canvas_w, canvas_h);
     out.row0 = out.mask.y;
     out.row1 = out.mask.y + out.mask.height;
     return;
@@ -117,7 +117,8 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
   s.chain_end = g.chains.size();
   auto first = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_begin);
   auto last = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_end);
-  std::stable_sort(first, last, [](const Chain& x, const Chain& y) { return x.ymin < y.ymin; });  // stable: deterministic ties
+  // ties broken by position: deterministic, and no allocation (unlike stable_sort)
+  std::sort(first, last, [](const Chain& x, const Chain& y) { return x.ymin < y.ymin || (x.ymin == y.ymin && x.first < y.first); });
   if (s.empty()) {
     out.row0 = out.row1 = 0;
     return;

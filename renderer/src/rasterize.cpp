@@ -11,9 +11,6 @@
 #include <atomic>
 #include <cmath>
 #include <thread>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 
 namespace splinefig::render {
 namespace detail {
@@ -81,10 +78,11 @@ Image rasterize(const Scene& scene, int threads) {
   Box clip = box ? Box{0, 0, static_cast<double>(W), static_cast<double>(H)} : grid.clip;
   Vec2 shift = box ? Vec2{0, 0} : Vec2{grid.delta, grid.delta};
 
-  auto T0 = std::chrono::steady_clock::now(); auto C0 = std::clock();
   Geometry geom;
   const auto& items = scene.items();
-  std::vector<Prepared> prep(items.size());
+  std::vector<Prepared> prep;
+  reserve_huge(prep, items.size());
+  prep.resize(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) {
     prepare_item(items[i], shift, clip, geom, prep[i], W, H);
     Prepared& p = prep[i];
@@ -97,7 +95,6 @@ Image rasterize(const Scene& scene, int threads) {
     }
   }
 
-  auto C1 = std::clock();
   const int bands = (H + kBandRows - 1) / kBandRows;
   // Which items touch which band, in item order.
   std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
@@ -134,7 +131,6 @@ Image rasterize(const Scene& scene, int threads) {
     for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
     for (auto& t : pool) t.join();
   }
-  if (std::getenv("SF_TIMING")) std::fprintf(stderr, "prepare %.1f ms cpu, bands %.1f ms cpu, verts %zu chains %zu\n", (C1-C0)*1000.0/CLOCKS_PER_SEC, (std::clock()-C1)*1000.0/CLOCKS_PER_SEC, geom.verts.size(), geom.chains.size()); (void)T0;
   return img;
 }
 

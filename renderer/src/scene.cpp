@@ -2,12 +2,20 @@
 // std::invalid_argument naming the argument, so rasterization never sees NaN or infinities.
 #include "scene_item.hpp"
 
+#include "huge_pages.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace splinefig::render {
 namespace {
+
+// Appends with geometric growth into huge-page-advised storage (100k items are tens of MB).
+void add(std::vector<Scene::Item>& items, Scene::Item&& it) {
+  if (items.size() == items.capacity()) detail::reserve_huge(items, std::max<std::size_t>(64, 2 * items.capacity()));
+  items.push_back(std::move(it));
+}
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
 
@@ -100,7 +108,7 @@ void Scene::stroke_polyline(std::span<const Vec2> points, bool closed, const Str
   it.closed = closed;
   it.stroke = style;
   it.color = color;
-  items_->push_back(std::move(it));
+  add(*items_, std::move(it));
 }
 
 void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) {
@@ -111,7 +119,7 @@ void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRul
   it.contours = contours;
   it.rule = rule;
   it.color = color;
-  items_->push_back(std::move(it));
+  add(*items_, std::move(it));
 }
 
 void Scene::fill_circle(Vec2 centre, double radius, Color color) {
@@ -124,7 +132,7 @@ void Scene::fill_circle(Vec2 centre, double radius, Color color) {
   it.centre = centre;
   it.radius = radius;
   it.color = color;
-  items_->push_back(std::move(it));
+  add(*items_, std::move(it));
 }
 
 void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) {
@@ -139,7 +147,7 @@ void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, 
   it.radius = radius;
   it.stroke = style;
   it.color = color;
-  items_->push_back(std::move(it));
+  add(*items_, std::move(it));
 }
 
 void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
@@ -153,7 +161,7 @@ void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
   it.centre = centre;
   it.radius = size;
   it.color = fill;
-  items_->push_back(std::move(it));
+  add(*items_, std::move(it));
 }
 
 void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
@@ -163,11 +171,10 @@ void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
   check_color(style.color, "text");
   Item it;
   it.kind = Item::Kind::Text;
-  it.text = std::string(text);
+  it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style});
   it.centre = anchor;
-  it.text_style = style;
   it.color = style.color;
-  items_->push_back(std::move(it));
+  add(*items_, std::move(it));
 }
 
 }  // namespace splinefig::render

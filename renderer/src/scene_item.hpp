@@ -3,6 +3,7 @@
 // built at rasterization time, when the clip region (canvas plus filter support) is known.
 #include <splinefig/renderer/renderer.hpp>
 
+#include <memory>
 #include <vector>
 
 namespace splinefig::render {
@@ -17,8 +18,11 @@ struct Scene::Item {
   Vec2 centre;
   double radius = 0;  // Disk, Ring: radius; Marker: size
   render::Marker marker = render::Marker::Circle;
-  std::string text;
-  TextStyle text_style;
+  struct Text {
+    std::string text;
+    TextStyle style;
+  };
+  std::unique_ptr<Text> text;  // Text only: keeps the common item small
 };
 
 }  // namespace splinefig::render

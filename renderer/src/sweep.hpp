@@ -125,6 +125,22 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
   }
   if (active_.empty()) return next_ < s_->chain_end;
 
+  if (s_->simple) {
+    // |winding| <= 1: every chain is a boundary, its sign is dir times the inside winding.
+    for (std::size_t i = 0; i < active_.size(); ++i) {
+      const Chain& c = ch[active_[i]];
+      std::size_t& k = cursor_[i];
+      while (k + 1 < c.last && v[k + 1].y <= y0) ++k;
+      const double ta = std::max(c.ymin, y0), tb = std::min(c.ymax, y1);
+      const double sign = c.dir * s_->orient;
+      for (std::size_t j = k; j < c.last && v[j].y < tb; ++j) {
+        const double lo = std::max(ta, v[j].y), hi = std::min(tb, v[j + 1].y);
+        if (hi > lo) sink.edge(x_at(j, lo), lo, x_at(j, hi), hi, sign);
+      }
+    }
+    return true;
+  }
+
   spans_.clear();
   for (std::size_t i = 0; i < active_.size(); ++i) {
     const Chain& c = ch[active_[i]];
@@ -153,12 +169,6 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
     spans_.push_back(s);
   }
   if (spans_.empty()) return true;
-
-  if (s_->simple) {
-    // |winding| <= 1: every chain is a boundary, its sign is dir times the inside winding.
-    for (const Span& s : spans_) emit(s, s.ta, s.tb, s.dir * s_->orient, sink);
-    return true;
-  }
 
   events_.clear();
   events_.push_back(y0);
