@@ -136,15 +136,20 @@ TEST_CASE("multiplicity: the B-spline reaches a triple knot, Catmull-Rom passes 
   Json index = parse_json(read_file(dir / "index.json"));
   const Json& fig = figure(index, "multiplicity");
   Png png = load_png(dir / "multiplicity.png");
-  REQUIRE(fig["axes"].size() == 2);
-  AxesMap bs(fig["axes"][0]), cr(fig["axes"][1]);
-  // B-spline with (2,0) three times: the piece between the copies is the constant (2, 0).
-  CHECK(best_share(png, bs.px(2), bs.py(0), series_color(fig["axes"][0], "3"), 0) > 0.5);
-  // Multiplicity 1: the B-spline stays above the knot, at (P + 4 (2,0) + P') / 6 = (2, 2/3).
-  CHECK(best_share(png, bs.px(2), bs.py(2.0 / 3), series_color(fig["axes"][0], "1"), 0) > 0.5);
-  // Catmull-Rom interpolates: all three curves pass (1, 2) and (3, 2); the last drawn shows.
-  CHECK(best_share(png, cr.px(1), cr.py(2), series_color(fig["axes"][1], "3"), 0) > 0.5);
-  CHECK(best_share(png, cr.px(3), cr.py(2), series_color(fig["axes"][1], "3"), 0) > 0.5);
+  REQUIRE(fig["axes"].size() == 6);  // B-spline row, Catmull-Rom row; multiplicity 1, 2, 3
+  const Rgb red = hex("#d62728"), blue = hex("#1f77b4");
+  AxesMap bs1(fig["axes"][0]), bs2(fig["axes"][1]), bs3(fig["axes"][2]), cr1(fig["axes"][3]);
+  CHECK(series_color(fig["axes"][0], "B-spline, multiplicity 1").r == red.r);
+  // Multiplicity 1: the B-spline passes (P + 4 (2,0) + P') / 6 = (2, 2/3) above the knot.
+  CHECK(best_share(png, bs1.px(2), bs1.py(2.0 / 3), red, 0) > 0.5);
+  CHECK(best_share(png, bs1.px(2), bs1.py(0), red, 0) < 0.1);
+  // Multiplicity 2: at the knot's copies the curve is at ((2,0) + 4 (2,0) + (1,2)) / 6 = (11/6, 1/3)
+  // and symmetrically (13/6, 1/3).
+  CHECK(best_share(png, bs2.px(11.0 / 6), bs2.py(1.0 / 3), red, 0) > 0.5);
+  // Multiplicity 3: the piece between the copies is the constant (2, 0): the curve reaches the knot.
+  CHECK(best_share(png, bs3.px(2), bs3.py(0), red, 0) > 0.5);
+  // Catmull-Rom interpolates: it passes (1, 2), (2, 0) and (3, 2).
+  for (auto [x, y] : {std::pair{1.0, 2.0}, {2.0, 0.0}, {3.0, 2.0}}) CHECK(best_share(png, cr1.px(x), cr1.py(y), blue, 0) > 0.5);
 }
 
 TEST_CASE("ends: doubled Catmull-Rom reaches the end knots, open Catmull-Rom starts at the second") {

@@ -1,0 +1,48 @@
+// The gallery page opens in a real browser and every image loads. Needs Debian's
+// `chromium` (headless); where it is absent the test says so and passes without checking.
+#include <catch2/catch.hpp>
+
+#include "support.hpp"
+
+using namespace figtest;
+
+namespace {
+
+std::string find_chromium() {
+  for (const char* name : {"chromium", "chromium-browser", "google-chrome"}) {
+    Result r = run(std::string("command -v ") + name);
+    if (r.code == 0 && !r.out.empty()) return r.out.substr(0, r.out.find('\n'));
+  }
+  return "";
+}
+
+size_t count(const std::string& s, const std::string& what) {
+  size_t n = 0;
+  for (size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("the gallery loads every figure in headless Chromium") {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) {
+    WARN("chromium is not installed: the gallery was not checked in a browser (apt-get install chromium)");
+    return;
+  }
+  auto dir = render_builtin("gallery", {});
+  Json index = parse_json(read_file(dir / "index.json"));
+  const size_t figures = index["figures"].size();
+  REQUIRE(figures >= 10);
+  const std::string flags = " --headless --no-sandbox --disable-gpu --allow-file-access-from-files"
+                            " --virtual-time-budget=10000 --window-size=1280,1800 ";
+  const std::string url = "file://" + fs::absolute(dir / "index.html").string();
+  Result dom = run(chromium + flags + "--dump-dom " + url + " 2>/dev/null");
+  REQUIRE(dom.code == 0);
+  CHECK(dom.out.find("data-images-ok=\"yes\"") != std::string::npos);
+  CHECK(count(dom.out, "data-loaded=\"yes\"") == figures);
+  CHECK(count(dom.out, "data-loaded=\"no\"") == 0);
+  // A screenshot to look at (build/test-figures/gallery-*/gallery.png).
+  run(chromium + flags + "--screenshot=" + (dir / "gallery.png").string() + " " + url);
+  CHECK(fs::exists(dir / "gallery.png"));
+}
