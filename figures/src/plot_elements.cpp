@@ -50,11 +50,11 @@ Vec2 nearest_at_x(const std::vector<Vec2>& pts, double px) {
 
 void stroke_clipped(Painter& p, const std::vector<Vec2>& pts, bool closed, const render::StrokeStyle& st, Color c,
                     const Rect& clip) {
-  auto runs = clip_polyline(pts, closed, clip);
-  if (runs.size() == 1 && runs[0].size() == pts.size()) {
+  if (std::all_of(pts.begin(), pts.end(), [&](Vec2 q) { return clip.contains(q); })) {
     p.stroke(pts, closed, st, c);
     return;
   }
+  auto runs = clip_polyline(pts, closed, clip);
   for (auto& r : runs) p.stroke(std::move(r), false, st, c);
 }
 
