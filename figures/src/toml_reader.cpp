@@ -284,7 +284,7 @@ render::StrokeStyle TableReader::stroke(render::StrokeStyle s) {
       if (d < 0) fail("dash", "dash lengths must not be negative");
       total += d;
     }
-    if (!s.dashes.empty() && !(total > 0)) fail("dash", "dash lengths must not all be zero");
+    if (!s.dashes.empty() && !(total >= 0.001)) fail("dash", "the dash pattern must be at least 0.001 px long");
     if (s.dashes.size() % 2) {  // SVG: an odd list repeats to make it even
       auto copy = s.dashes;
       s.dashes.insert(s.dashes.end(), copy.begin(), copy.end());
