@@ -94,3 +94,19 @@ TEST_CASE("Invalid basis specs name what is wrong") {
   CHECK_THAT(msg("uniform-bspline:degree=0"), Catch::Contains("out of range"));
   CHECK_THAT(msg("cardinal:a=1,a=2"), Catch::Contains("given twice"));
 }
+
+TEST_CASE("Canonical specs read back to the same basis") {
+  for (const char* spec : {"catmull-rom", "cardinal:a=0.1", "bspline", "tensioned-bspline:a=0.3333333333333333",
+                           "beta:b1=2.5,b2=1e-07", "uniform-bspline:degree=5"}) {
+    const Basis b = parse_basis(spec);
+    INFO(spec << " -> " << b.spec);
+    CHECK(b.spec == spec);
+    const Basis again = parse_basis(b.spec);
+    CHECK(again.m == b.m);
+    CHECK(again.family == b.family);
+  }
+  // Defaults and key order do not matter; the spec comes back in canonical form.
+  CHECK(parse_basis("beta:b2=3,b1=0.5").spec == "beta:b1=0.5,b2=3");
+  CHECK(parse_basis("beta").spec == "beta:b1=1,b2=0");
+  CHECK(parse_basis("uniform-bspline").spec == "uniform-bspline:degree=3");
+}
