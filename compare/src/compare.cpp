@@ -146,6 +146,12 @@ std::string json_number(double v) {
   return buf;
 }
 
+// A float as the shortest text that reads back to it.
+std::string json_float(float v) {
+  if (!std::isfinite(v)) return json_number(double(v));
+  return format_shortest(v);
+}
+
 std::string json_size(const Image& im) {
   return "{\"width\": " + std::to_string(im.width) + ", \"height\": " + std::to_string(im.height) +
          ", \"x\": " + std::to_string(im.x) + ", \"y\": " + std::to_string(im.y) +
@@ -182,15 +188,15 @@ std::string json_report(const Comparison& c, const Options& options, const std::
   s += "  \"mean_error\": " + json_number(m.mean_error) + ",\n";
   s += "  \"rms_error\": " + json_number(m.rms_error) + ",\n";
   s += "  \"psnr\": " + json_number(m.psnr) + ",\n";
-  s += "  \"max_error\": " + json_number(m.max_error) + ",\n";
+  s += "  \"max_error\": " + json_float(m.max_error) + ",\n";
   s += "  \"max_error_at\": {\"x\": " + std::to_string(m.max_x) + ", \"y\": " + std::to_string(m.max_y) +
        ", \"channel\": " + json_string(channel) + "},\n";
   s += "  \"pixels\": " + std::to_string(m.npels) + ",\n";
-  s += "  \"warn\": {\"threshold\": " + json_number(t.warn) + ", \"percent_allowed\": " + json_number(t.warnpercent) +
-       ", \"hard\": " + json_number(t.hardwarn) + ", \"pixels_over\": " + std::to_string(m.nwarn) +
+  s += "  \"warn\": {\"threshold\": " + json_float(t.warn) + ", \"percent_allowed\": " + json_float(t.warnpercent) +
+       ", \"hard\": " + json_float(t.hardwarn) + ", \"pixels_over\": " + std::to_string(m.nwarn) +
        ", \"percent_over\": " + json_number(100.0 * double(m.nwarn) / npels) + "},\n";
-  s += "  \"fail\": {\"threshold\": " + json_number(t.fail) + ", \"percent_allowed\": " + json_number(t.failpercent) +
-       ", \"hard\": " + json_number(t.hardfail) + ", \"pixels_over\": " + std::to_string(m.nfail) +
+  s += "  \"fail\": {\"threshold\": " + json_float(t.fail) + ", \"percent_allowed\": " + json_float(t.failpercent) +
+       ", \"hard\": " + json_float(t.hardfail) + ", \"pixels_over\": " + std::to_string(m.nfail) +
        ", \"percent_over\": " + json_number(100.0 * double(m.nfail) / npels) + "},\n";
   if (c.ssim) s += "  \"ssim\": " + json_number(*c.ssim) + ",\n";
   if (options.ssim_min) s += "  \"ssim_min\": " + json_number(*options.ssim_min) + ",\n";
