@@ -52,20 +52,25 @@ void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::v
     return;
   }
   const double theta = c == 0 ? -kPi : std::atan2(c, dt);  // signed turn from a to b
+  const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1 + dt)));
+  // The miter tip M lies on both outer offset lines, so A (on the line before M) and B (on the
+  // line after it) are collinear outline vertices: the miter outline is just M. A round join
+  // whose miter tip is within the arc tolerance of the arc (h (1/cos(theta/2) - 1) <= tol, e.g.
+  // the tiny turns of a densely sampled curve) is drawn as that tip too.
+  const bool miter_ok = cos_half > 0 && 1.0 / cos_half <= style_.miter_limit;
+  if ((style_.join == Join::Miter && miter_ok) ||
+      (style_.join == Join::Round && cos_half > 0.5 && h * (1.0 / cos_half - 1.0) <= kArcTolerance)) {
+    v.push_back(P + (s * h / (1 + dt)) * (a.n + b.n));
+    return;
+  }
   v.push_back(A);
   switch (style_.join) {
     case Join::Round: {
-      // 1 - cos(theta/2) <= (1 - cos theta)/2: below tolerance the chord A-B is the arc.
-      if (h * 0.5 * (1 - dt) <= kArcTolerance) break;
       const double a0 = std::atan2(s * a.n.y, s * a.n.x);
       arc_interior(P, h, a0, theta, out_.clip(), [&](Vec2 q) { v.push_back(q); });
       break;
     }
-    case Join::Miter: {
-      const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1 + dt)));
-      if (cos_half > 0 && 1.0 / cos_half <= style_.miter_limit) v.push_back(P + (s * h / (1 + dt)) * (a.n + b.n));
-      break;
-    }
+    case Join::Miter:  // past the limit: a bevel
     case Join::Bevel: break;
   }
   v.push_back(B);
