@@ -59,3 +59,15 @@ TEST_CASE("a figure moved by one pixel fails its reference") {
   auto stored = testing::detail::as_stored(img, src + "/tests/reference/figures/cbasis.png", false);
   CHECK(compare::compare_images(expected, stored, o).verdict == compare::Verdict::failure);
 }
+
+TEST_CASE("figures are identical for any thread count") {
+  const std::string src = SPLINEFIG_SOURCE_DIR;
+  for (const char* name : {"bias", "ends"}) {
+    figures::FigureSpec spec = figures::load_spec(src + "/figures/specs/" + name + ".toml");
+    figures::RenderedFigure one = figures::render_figure(spec, {1, 1});
+    figures::RenderedFigure two = figures::render_figure(spec, {1, 2});
+    figures::RenderedFigure five = figures::render_figure(spec, {1, 5});
+    CHECK(one.image.rgba == two.image.rgba);
+    CHECK(one.image.rgba == five.image.rgba);
+  }
+}
