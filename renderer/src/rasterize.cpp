@@ -80,22 +80,52 @@ Image rasterize(const Scene& scene, int threads) {
 
   Geometry geom;
   const auto& items = scene.items();
-  std::vector<Prepared> prep;
-  reserve_huge(prep, items.size());
-  prep.resize(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    prepare_item(items[i], shift, clip, geom, prep[i], W, H);
-    Prepared& p = prep[i];
-    if (p.is_text || p.shape.empty()) continue;
+  auto prepare = [&](std::size_t i, Prepared& p) {
+    prepare_item(items[i], shift, clip, geom, p, W, H);
+    if (p.is_text || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
       p.row1 = std::min(H, static_cast<int>(std::ceil(p.shape.ymax)));
     } else {
       grid.rows_of(p.shape, p.row0, p.row1);
     }
+  };
+  const int bands = (H + kBandRows - 1) / kBandRows;
+  int nthreads = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  nthreads = std::min(nthreads, bands);
+
+  if (nthreads <= 1) {
+    // One thread: each item is built, drawn and dropped in turn, so its geometry is still in
+    // cache and memory holds one item at a time. Every row is computed exactly as in the band
+    // schedule below (a strip's result does not depend on where its band starts, and filtered
+    // items are drawn band by band with the same band boundaries): identical bytes.
+    BoxRow row;
+    row.reset(W);
+    FilterScratch fs;
+    StripSweep sweep;
+    Prepared p;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      geom.verts.clear();
+      geom.chains.clear();
+      p = Prepared{};
+      prepare(i, p);
+      if (p.row1 <= p.row0) continue;
+      if (p.is_text) {
+        composite_mask(p, img, 0, H);
+      } else if (box) {
+        render_box(geom, p, img, p.row0, p.row1, row, sweep);
+      } else {
+        for (int b = p.row0 / kBandRows; b <= (p.row1 - 1) / kBandRows; ++b)
+          render_filtered(geom, p, grid, img, b * kBandRows, std::min(H, (b + 1) * kBandRows), fs, sweep);
+      }
+    }
+    return img;
   }
 
-  const int bands = (H + kBandRows - 1) / kBandRows;
+  std::vector<Prepared> prep;
+  reserve_huge(prep, items.size());
+  prep.resize(items.size());
+  for (std::size_t i = 0; i < items.size(); ++i) prepare(i, prep[i]);
   // Which items touch which band, in item order.
   std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
   for (std::uint32_t i = 0; i < prep.size(); ++i) {
@@ -104,8 +134,6 @@ Image rasterize(const Scene& scene, int threads) {
       band_items[static_cast<std::size_t>(b)].push_back(i);
   }
 
-  int nthreads = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  nthreads = std::min(nthreads, bands);
   std::atomic<int> next{0};
   auto worker = [&]() {
     BoxRow row;
@@ -124,13 +152,9 @@ Image rasterize(const Scene& scene, int threads) {
       }
     }
   };
-  if (nthreads <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-  }
+  std::vector<std::thread> pool;
+  for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
   return img;
 }
 
