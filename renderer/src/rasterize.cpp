@@ -42,6 +42,13 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
     row.begin(y);
     if (!sweep.strip(static_cast<double>(y), static_cast<double>(y + 1), row)) break;
     if (row.cmax < row.cmin) continue;
+    // The canvas (16 bytes a pixel) rarely stays in cache across thousands of small items:
+    // ask for the pixels two rows ahead, whose columns are close to this row's.
+    if (y + 2 < y_end) {
+      const int x0 = std::max(0, row.cmin - 4), x1 = std::min(img.width - 1, row.cmax + 5);
+      for (int x = x0; x <= x1; x += 4) __builtin_prefetch(img.pixel(x, y + 2), 1);
+      __builtin_prefetch(img.pixel(x1, y + 2), 1);
+    }
     double cov = 0;
     const int xe = std::min(row.cmax + 1, img.width - 1);
     for (int x = row.cmin; x <= xe; ++x) {
