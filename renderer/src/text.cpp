@@ -30,6 +30,7 @@ int pixel_size(double size) { return std::max(1, static_cast<int>(std::lround(si
 
 TextMask text_mask(std::string_view text, Vec2 anchor, const TextStyle& style, int canvas_w, int canvas_h) {
   TextMask m;
+  if (text.find_first_not_of(" \t\n") == std::string_view::npos) return m;  // no ink
   const int fs = pixel_size(style.size);
   const std::string font = font_path(style.font);
   std::lock_guard<std::mutex> lock(font_mutex());
@@ -68,6 +69,7 @@ TextMask text_mask(std::string_view text, Vec2 anchor, const TextStyle& style, i
 namespace splinefig::render {
 
 TextExtent measure_text(std::string_view text, const TextStyle& style) {
+  if (text.empty()) return TextExtent{};
   const std::string font = detail::font_path(style.font);
   std::lock_guard<std::mutex> lock(detail::font_mutex());
   OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, detail::pixel_size(style.size), font);

@@ -185,6 +185,9 @@ TEST_CASE("text: measure_text grows with the string, render_text draws at the an
   CHECK(b.width > 3 * a.width);
   CHECK(a.ascent > 8);
   CHECK(a.ascent < 16);
+  CHECK(sr::measure_text("", st).width == 0);
+  auto blank = testutil::rendered_coverage(8, 8, [&](sr::Scene& s) { s.text("", {4, 4}, st); s.text("  ", {4, 4}, st); });
+  for (double c : blank) CHECK(c == 0);
   for (auto [h, v] : {std::pair{sr::HAlign::Left, sr::VAlign::Baseline}, {sr::HAlign::Center, sr::VAlign::Middle},
                       {sr::HAlign::Right, sr::VAlign::Top}}) {
     st.halign = h;
