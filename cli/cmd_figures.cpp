@@ -111,7 +111,8 @@ const splinefig::cli::Registration reg{
     "figures", "Regenerate the built-in figures, index.json and the gallery index.html", [](CLI::App& app) {
       auto a = std::make_shared<FiguresArgs>();
       app.add_option("--out", a->out, "Output directory (default out/figures)");
-      app.add_option("--only", a->only, "Only these figures (names as in figures/specs)");
+      app.add_option("--only", a->only, "Only these figures (names as in figures/specs; repeat or comma-separate)")
+          ->delimiter(',');
       app.add_option("--format", a->format, "Comma-separated: png, exr (default png)");
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1; 2 for print)");
       app.add_option("--threads", a->threads, "Rendering threads (default: all cores)");
