@@ -1,6 +1,7 @@
 // The figure spec loader, part 2: [axes] panels and their plot elements (docs/spec.md).
 #include "spec_parse.hpp"
 #include "companion_figures.hpp"
+#include "filter_figures.hpp"
 
 #include <splinefig/figures/palette.hpp>
 
@@ -287,6 +288,7 @@ AxesSpec parse_axes(const toml::table& table, const std::string& path, const Par
   each("vline", [](TableReader& s) { return parse_rule(s, false); });
   each("image", [&](TableReader& s) { return parse_image_element(s, ctx); });
   parse_companion_elements(r, elements);  // docs/companion.md
+  parse_filter_elements(r, ctx, elements);  // docs/resample.md
   r.finish();
   std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [line, e] : elements) ax.elements.push_back(std::move(e));
