@@ -5,6 +5,7 @@
 #include "huge_pages.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -19,15 +20,30 @@ void add(std::vector<Scene::Item>& items, Scene::Item&& it) {
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
 
+// Beyond 1e15 px a double cannot place a point within a pixel, and differences of such
+// values may overflow: lengths and positions are limited to that range.
+constexpr double kMaxCoordinate = 1e15;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 void check_finite(double v, const char* call, const char* name) {
-  if (!std::isfinite(v)) bad(std::string(call) + ": " + name + " is not finite (" + std::to_string(v) + ")");
+  if (!std::isfinite(v)) bad(std::string(call) + ": " + name + " is not finite (" + num(v) + ")");
+  if (std::abs(v) > kMaxCoordinate) bad(std::string(call) + ": " + name + " " + num(v) + " exceeds 1e15 in magnitude");
 }
 
 void check_points(std::span<const Vec2> pts, const char* call, const char* name) {
-  for (std::size_t i = 0; i < pts.size(); ++i)
+  for (std::size_t i = 0; i < pts.size(); ++i) {
     if (!std::isfinite(pts[i].x) || !std::isfinite(pts[i].y))
-      bad(std::string(call) + ": " + name + " point " + std::to_string(i) + " is not finite (" +
-          std::to_string(pts[i].x) + ", " + std::to_string(pts[i].y) + ")");
+      bad(std::string(call) + ": " + name + " point " + std::to_string(i) + " is not finite (" + num(pts[i].x) +
+          ", " + num(pts[i].y) + ")");
+    if (std::abs(pts[i].x) > kMaxCoordinate || std::abs(pts[i].y) > kMaxCoordinate)
+      bad(std::string(call) + ": " + name + " point " + std::to_string(i) + " (" + num(pts[i].x) + ", " +
+          num(pts[i].y) + ") exceeds 1e15 px in magnitude");
+  }
 }
 
 void check_color(const Color& c, const char* call) {
@@ -38,7 +54,7 @@ void check_color(const Color& c, const char* call) {
 
 void check_style(const StrokeStyle& s, const char* call) {
   check_finite(s.width, call, "stroke width");
-  if (s.width < 0) bad(std::string(call) + ": stroke width " + std::to_string(s.width) + " is negative");
+  if (s.width < 0) bad(std::string(call) + ": stroke width " + num(s.width) + " is negative");
   check_finite(s.miter_limit, call, "miter limit");
   if (s.miter_limit < 1) bad(std::string(call) + ": miter limit " + std::to_string(s.miter_limit) + " is below 1");
   check_finite(s.dash_offset, call, "dash offset");

@@ -97,7 +97,7 @@ TEST_CASE("huge shapes finish quickly and are clipped correctly") {
   s.stroke_circle({1e12, 1e12}, 1.4e12, st, {0, 0, 1, 1});
   st.width = 1e12;
   s.stroke_polyline(std::vector<sr::Vec2>{{0, 0}, {5, 5}}, false, st, {0, 1, 0, 0.2f});
-  s.fill_polygon({{{-1e300, -1e300}, {1e300, 0}, {0, 1e300}}}, sr::FillRule::NonZero, {0.5f, 0.5f, 0.5f, 0.5f});
+  s.fill_polygon({{{-1e15, -1e15}, {1e15, 0}, {0, 1e15}}}, sr::FillRule::NonZero, {0.5f, 0.5f, 0.5f, 0.5f});
   auto img = sr::rasterize(s, 2);
   for (float v : img.rgba) REQUIRE(std::isfinite(v));
   CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(20));
@@ -123,6 +123,9 @@ TEST_CASE("NaN and infinite input is rejected with std::invalid_argument naming 
   st.dashes = {1e-6, 1e-6};
   REQUIRE_THROWS_WITH(s.stroke_polyline(std::vector<sr::Vec2>{{0, 0}, {1, 1}}, false, st, {}), Catch::Contains("period"));
   REQUIRE_THROWS_WITH(s.fill_circle({0, 0}, 1, {NAN, 0, 0, 1}), Catch::Contains("colour"));
+  // magnitudes where doubles no longer resolve pixels (and differences overflow)
+  REQUIRE_THROWS_WITH(s.fill_polygon({{{-1e300, 0}, {1e300, 0}, {0, 1}}}, sr::FillRule::NonZero, {}), Catch::Contains("1e15"));
+  REQUIRE_THROWS_WITH(s.fill_circle({0, 0}, 1e200, {}), Catch::Contains("radius"));
   REQUIRE(s.items().empty());  // nothing half-added
 }
 
