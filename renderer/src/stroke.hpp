@@ -23,8 +23,9 @@
 
 namespace splinefig::render::detail {
 
-// Appends the closed contours of the stroke of `pts` (dashes included) to `out`. `reach` is
-// how far from the canvas geometry may be skipped (dash runs far outside are not generated).
+// Appends the closed contours of the stroke of `pts` (dashes included) to `out`. Dash runs
+// farther from the clip box than the stroke can reach are skipped, not generated, so a dash
+// pattern on a path with vertices at 1e12 costs only what is near the canvas.
 void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out);
 
 // The stroke of a path with no dashes.

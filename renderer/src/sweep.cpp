@@ -11,7 +11,6 @@ void StripSweep::crossings(const Span& a, const Span& b) {
   const auto& v = g_->verts;
   const std::size_t la = g_->chains[a.chain].last, lb = g_->chains[b.chain].last;
   std::size_t ka = a.k, kb = b.k;
-  (void)0;
   double y = lo;
   double d = x_on(a, ka, y) - x_on(b, kb, y);
   int last_sign = d > 0 ? 1 : (d < 0 ? -1 : 0);

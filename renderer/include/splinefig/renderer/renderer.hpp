@@ -32,6 +32,7 @@ enum class Join { Miter, Round, Bevel };
 enum class Cap { Butt, Round, Square };
 enum class FillRule { NonZero, EvenOdd };
 
+// Pieces as in SVG 2: a round join is the circular sector between the outer corners.
 struct StrokeStyle {
   double width = 1.0;
   Join join = Join::Miter;
@@ -44,7 +45,9 @@ struct StrokeStyle {
 // A separable pixel filter k(x) k(y) given as a piecewise polynomial on unit intervals:
 // piece p covers [lo + p, lo + p + 1) and holds coefficients in ascending powers of the
 // local variable u = x - (lo + p) in [0, 1). Box is the default (exact area coverage).
-// The figures layer converts spline basis functions into this form.
+// The figures layer converts spline basis functions into this form. A pixel's value is the
+// shape convolved with k(x) k(y) at the pixel centre, divided by (integral of k)^2, computed
+// exactly (see docs/renderer.md).
 struct PixelFilter {
   enum class Kind { Box, Piecewise } kind = Kind::Box;
   double lo = -0.5;
