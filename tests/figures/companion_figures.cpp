@@ -28,8 +28,10 @@ struct Rendered {
   std::string name;
 };
 
+// One `splinefig figures` run for all the checked figures (a process start is the slow part).
 Rendered render(const std::string& name) {
-  const fs::path dir = render_builtin("companion-" + name, {name});
+  static const fs::path dir = render_builtin(
+      "companion", {"s003-fig01", "s003-fig02", "s003-fig14", "s003-fig16", "s003-fig17", "s002-fig474", "local-betas"});
   return {parse_json(read_file(dir / "index.json")), load_png(dir / (name + ".png")), name};
 }
 
@@ -55,95 +57,79 @@ void check_reference(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("s003-fig01: the degree-10 Lagrange polynomial swings to 2.76 and 3.17 near the ends") {
-  const Rendered f = render("s003-fig01");
-  // P(1/2) = 362017/131072, P(19/2) = 415701/131072 (exact rational arithmetic).
-  CHECK(on(f, 0.5, 362017.0 / 131072, "#d62728"));
-  CHECK(on(f, 9.5, 415701.0 / 131072, "#d62728"));
-  CHECK_FALSE(on(f, 0.5, 0.5, "#d62728", 0.2));
-}
-
-TEST_CASE("s003-fig02: the relaxed spline through the step passes 1/2 halfway (odd symmetry)") {
-  const Rendered f = render("s003-fig02");
-  // y - 1/2 is odd about t = 4.5 in the data, so the natural spline has P(4.5) = (4.5, 0.5).
-  CHECK(on(f, 4.5, 0.5, "#1f77b4"));
-}
-
-TEST_CASE("s003-fig14: the seed's Bezier points and B-spline control points are drawn") {
-  const Rendered f = render("s003-fig14");
-  // Bezier #1..#4 of the seed's solution (their inner control points).
-  for (auto [x, y] : {std::pair{0.0, 0.0}, {-1.0, 1.0}, {-1.0, 3.0}, {0.0, 4.0}, {2.0, 4.0}, {3.0, 3.0}, {5.0, 3.0}, {6.0, 4.0}})
-    CHECK(on(f, x, y, "#2ca02c"));
-  // B_1 = (-2, 2), B_2 = (1, 5), B_3 = (4, 2): grey polygon vertices.
-  for (auto [x, y] : {std::pair{-2.0, 2.0}, {1.0, 5.0}, {4.0, 2.0}}) CHECK(on(f, x, y, "#888888"));
-}
-
-TEST_CASE("s003-fig16: basis function f_k is 1 at t = k") {
-  const Rendered f = render("s003-fig16");
-  // f_k(k) = 1 and f_k'(k) = 0 for the inner ones (f_2 is symmetric about 2): the curve is at
-  // height 1 a few pixels beside its knot's dot.
-  const AxesMap m = f.map();
-  const double dx = 6 / (m.px(1) - m.px(0));  // 6 px in t
-  CHECK(on(f, 2 + dx, 1, "#2ca02c", 0.3));
-  CHECK(on(f, 2 - dx, 1, "#2ca02c", 0.3));
-  CHECK(on(f, 4 - dx / 3, 1, "#9467bd", 0.3));
-}
-
-TEST_CASE("s003-fig17: the in-between heel is (13 S_0 + 22 S_1 - 3 S_2)/32 (DD-4(d))") {
-  const Rendered f = render("s003-fig17");
-  // Heels (0,0), (2.9,0.3), (4,0): (22*2.9 - 12, 22*0.3)/32 = (1.61875, 0.20625); toes (0.8,0),
-  // (3.7,0.1), (4.8,0): (10.4 + 81.4 - 14.4, 2.2)/32 = (2.41875, 0.06875). The frame's foot runs
-  // between them, through their midpoint.
-  CHECK(on(f, 1.61875, 0.20625, "#d62728"));
-  CHECK(on(f, (1.61875 + 2.41875) / 2, (0.20625 + 0.06875) / 2, "#d62728"));
-  CHECK(on(f, 2.41875, 0.06875, "#d62728"));
-}
-
-TEST_CASE("s002-fig474: step 1 has the seed's points and the limit points lie on the segment") {
-  const Rendered f = render("s002-fig474");
-  // Step 1 of (0,0),(1,2),(3,2),(4,0): vertex points (P0 + 6P1 + P2)/8 = (1.125, 1.75) and
-  // (P1 + 6P2 + P3)/8 = (2.875, 1.75).
-  CHECK(on(f, 1.125, 1.75, "#ff7f0e"));
-  CHECK(on(f, 2.875, 1.75, "#ff7f0e"));
-  // Limits: P(0) = (P0 + 4P1 + P2)/6 = (7/6, 5/3) and the segment's midpoint
-  // (P0 + 23P1 + 23P2 + P3)/48 = (96/48, 92/48).
-  CHECK(on(f, 7.0 / 6, 5.0 / 3, "#d62728"));
-  CHECK(on(f, 2, 92.0 / 48, "#d62728"));
-  // Every step's polygon has 3 + 2^k points: one series each, as index.json lists them.
-  const Json& axes = figure(f.index, "s002-fig474")["axes"][0];
-  CHECK(axes["series"].size() >= 5);
-}
-
-TEST_CASE("local-betas: the joints take the uniform Beta-spline values of their vertex") {
-  const Rendered f = render("local-betas");
-  // Bias 10 at vertex (3,2): the joint is (2000 x2 + 440 x3 + 2 x4)/2442 with the memo's
-  // B_{10,0} (2b1^3 = 2000, 4(b1^2 + b1) = 440, d = 2442): (5328/2442, 880/2442).
-  CHECK(on(f, 5328.0 / 2442, 880.0 / 2442, "#d62728"));
-  // Tension 25 at vertex (2,0): B_{1,25} gives (2 x1 + 33 x2 + 2 x3)/37 = (74/37, 8/37).
-  CHECK(on(f, 2, 8.0 / 37, "#1f77b4"));
-  // Far from vertices 3 and 4 both are the B-spline: the joint at (5,2) is (5, 4/3).
-  const AxesMap m = f.map();
-  const Rgb p = f.png.at(static_cast<int>(m.px(5)), static_cast<int>(m.py(4.0 / 3)));
-  CHECK(p.r + p.g + p.b < 3 * 200);
+TEST_CASE("companion figures show FIGURES.md's checks") {
+  SECTION("s003-fig01: the degree-10 Lagrange polynomial swings to 2.76 and 3.17 near the ends") {
+    const Rendered f = render("s003-fig01");
+    // P(1/2) = 362017/131072, P(19/2) = 415701/131072 (exact rational arithmetic).
+    CHECK(on(f, 0.5, 362017.0 / 131072, "#d62728"));
+    CHECK(on(f, 9.5, 415701.0 / 131072, "#d62728"));
+    CHECK_FALSE(on(f, 0.5, 0.5, "#d62728", 0.2));
+  }
+  SECTION("s003-fig02: the relaxed spline through the step passes 1/2 halfway (odd symmetry)") {
+    const Rendered f = render("s003-fig02");
+    // y - 1/2 is odd about t = 4.5 in the data, so the natural spline has P(4.5) = (4.5, 0.5).
+    CHECK(on(f, 4.5, 0.5, "#1f77b4"));
+  }
+  SECTION("s003-fig14: the seed's Bezier points and B-spline control points are drawn") {
+    const Rendered f = render("s003-fig14");
+    // Bezier #1..#4 of the seed's solution (their inner control points).
+    for (auto [x, y] : {std::pair{0.0, 0.0}, {-1.0, 1.0}, {-1.0, 3.0}, {0.0, 4.0}, {2.0, 4.0}, {3.0, 3.0}, {5.0, 3.0}, {6.0, 4.0}})
+      CHECK(on(f, x, y, "#2ca02c"));
+    // B_1 = (-2, 2), B_2 = (1, 5), B_3 = (4, 2): grey polygon vertices.
+    for (auto [x, y] : {std::pair{-2.0, 2.0}, {1.0, 5.0}, {4.0, 2.0}}) CHECK(on(f, x, y, "#888888"));
+  }
+  SECTION("s003-fig16: basis function f_k is 1 at t = k") {
+    const Rendered f = render("s003-fig16");
+    // f_k(k) = 1 and f_k'(k) = 0 for the inner ones (f_2 is symmetric about 2): the curve is at
+    // height 1 a few pixels beside its knot's dot.
+    const AxesMap m = f.map();
+    const double dx = 6 / (m.px(1) - m.px(0));  // 6 px in t
+    CHECK(on(f, 2 + dx, 1, "#2ca02c", 0.3));
+    CHECK(on(f, 2 - dx, 1, "#2ca02c", 0.3));
+    CHECK(on(f, 4 - dx / 3, 1, "#9467bd", 0.3));
+  }
+  SECTION("s003-fig17: the in-between heel is (13 S_0 + 22 S_1 - 3 S_2)/32 (DD-4(d))") {
+    const Rendered f = render("s003-fig17");
+    // Heels (0,0), (2.9,0.3), (4,0): (22*2.9 - 12, 22*0.3)/32 = (1.61875, 0.20625); toes (0.8,0),
+    // (3.7,0.1), (4.8,0): (10.4 + 81.4 - 14.4, 2.2)/32 = (2.41875, 0.06875). The frame's foot runs
+    // between them, through their midpoint.
+    CHECK(on(f, 1.61875, 0.20625, "#d62728"));
+    CHECK(on(f, (1.61875 + 2.41875) / 2, (0.20625 + 0.06875) / 2, "#d62728"));
+    CHECK(on(f, 2.41875, 0.06875, "#d62728"));
+  }
+  SECTION("s002-fig474: step 1 has the seed's points and the limit points lie on the segment") {
+    const Rendered f = render("s002-fig474");
+    // Step 1 of (0,0),(1,2),(3,2),(4,0): vertex points (P0 + 6P1 + P2)/8 = (1.125, 1.75) and
+    // (P1 + 6P2 + P3)/8 = (2.875, 1.75).
+    CHECK(on(f, 1.125, 1.75, "#ff7f0e"));
+    CHECK(on(f, 2.875, 1.75, "#ff7f0e"));
+    // Limits: P(0) = (P0 + 4P1 + P2)/6 = (7/6, 5/3) and the segment's midpoint
+    // (P0 + 23P1 + 23P2 + P3)/48 = (96/48, 92/48).
+    CHECK(on(f, 7.0 / 6, 5.0 / 3, "#d62728"));
+    CHECK(on(f, 2, 92.0 / 48, "#d62728"));
+    // Every step's polygon has 3 + 2^k points: one series each, as index.json lists them.
+    const Json& axes = figure(f.index, "s002-fig474")["axes"][0];
+    CHECK(axes["series"].size() >= 5);
+  }
+  SECTION("local-betas: the joints take the uniform Beta-spline values of their vertex") {
+    const Rendered f = render("local-betas");
+    // Bias 10 at vertex (3,2): the joint is (2000 x2 + 440 x3 + 2 x4)/2442 with the memo's
+    // B_{10,0} (2b1^3 = 2000, 4(b1^2 + b1) = 440, d = 2442): (5328/2442, 880/2442).
+    CHECK(on(f, 5328.0 / 2442, 880.0 / 2442, "#d62728"));
+    // Tension 25 at vertex (2,0): B_{1,25} gives (2 x1 + 33 x2 + 2 x3)/37 = (74/37, 8/37).
+    CHECK(on(f, 2, 8.0 / 37, "#1f77b4"));
+    // Far from vertices 3 and 4 both are the B-spline: the joint at (5,2) is (5, 4/3).
+    const AxesMap m = f.map();
+    const Rgb p = f.png.at(static_cast<int>(m.px(5)), static_cast<int>(m.py(4.0 / 3)));
+    CHECK(p.r + p.g + p.b < 3 * 200);
+  }
 }
 
 // Every companion figure against its reference PNG (regenerate with
 // SPLINEFIG_UPDATE_REFERENCES=1 and look at each changed image before committing it).
-TEST_CASE("figure s003-fig01 matches its reference") { check_reference("s003-fig01"); }
-TEST_CASE("figure s003-fig02 matches its reference") { check_reference("s003-fig02"); }
-TEST_CASE("figure s003-fig03 matches its reference") { check_reference("s003-fig03"); }
-TEST_CASE("figure s003-fig04 matches its reference") { check_reference("s003-fig04"); }
-TEST_CASE("figure s003-fig05 matches its reference") { check_reference("s003-fig05"); }
-TEST_CASE("figure s003-fig06 matches its reference") { check_reference("s003-fig06"); }
-TEST_CASE("figure s003-fig07 matches its reference") { check_reference("s003-fig07"); }
-TEST_CASE("figure s003-fig08 matches its reference") { check_reference("s003-fig08"); }
-TEST_CASE("figure s003-fig09 matches its reference") { check_reference("s003-fig09"); }
-TEST_CASE("figure s003-fig10 matches its reference") { check_reference("s003-fig10"); }
-TEST_CASE("figure s003-fig11 matches its reference") { check_reference("s003-fig11"); }
-TEST_CASE("figure s003-fig12 matches its reference") { check_reference("s003-fig12"); }
-TEST_CASE("figure s003-fig13 matches its reference") { check_reference("s003-fig13"); }
-TEST_CASE("figure s003-fig14 matches its reference") { check_reference("s003-fig14"); }
-TEST_CASE("figure s003-fig16 matches its reference") { check_reference("s003-fig16"); }
-TEST_CASE("figure s003-fig17 matches its reference") { check_reference("s003-fig17"); }
-TEST_CASE("figure s002-fig474 matches its reference") { check_reference("s002-fig474"); }
-TEST_CASE("figure local-betas matches its reference") { check_reference("local-betas"); }
+TEST_CASE("the companion figures match their references") {
+  for (const char* name : {"s003-fig01", "s003-fig02", "s003-fig03", "s003-fig04", "s003-fig05", "s003-fig06", "s003-fig07", "s003-fig08", "s003-fig09", "s003-fig10", "s003-fig11", "s003-fig12", "s003-fig13", "s003-fig14", "s003-fig16", "s003-fig17", "s002-fig474", "local-betas"}) {
+    INFO("figure " << name);
+    check_reference(name);
+  }
+}
