@@ -120,6 +120,7 @@ void vertical(const float* const* rows, const float* w, int taps, size_t n, floa
     for (int t = 0; t < taps; ++t) acc += w[t] * rows[t][k];
     out[k] = acc;
   }
+  if (stream) _mm_sfence();  // order the weakly ordered streaming stores before what follows
 }
 
 // Outputs [i0, i1) of the row, reading extended positions from `base`, which holds position
