@@ -10,13 +10,20 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace test_support {
 
+// A directory of this process's own (ctest runs test cases in parallel processes), emptied
+// when the process starts.
 inline std::string scratch(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(SPLINEFIG_BINARY_DIR) / "test-work" / "compare";
-  std::filesystem::create_directories(dir);
+  static const std::filesystem::path dir = [] {
+    const auto d = std::filesystem::path(SPLINEFIG_BINARY_DIR) / "test-work" / "compare" / std::to_string(::getpid());
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+  }();
   return (dir / name).string();
 }
 
