@@ -60,6 +60,39 @@ void horizontal_v4(const float* ext, const long* first, long lo, const float* w,
     horizontal_v4_impl<0>(ext, first, lo, w, taps, dst, C, out);
 }
 
+// Two rows at once through horizontal_v4's loop: lanes 0-3 hold row a, lanes 4-7 row b (same
+// taps, same weights), so one 8-wide multiply-add does the work of two 4-wide ones. Per lane
+// the arithmetic is horizontal_v4's, so a row comes out the same whether paired or not.
+template <int TAPS>
+inline void horizontal_pair_impl(const float* a, const float* b, const long* first, long lo, const float* w,
+                                 int taps, int dst, int C, float* outa, float* outb) {
+  if (TAPS > 0) taps = TAPS;
+  for (int i = 0; i < dst; ++i) {
+    const long off = (first[i] - lo) * C;
+    const float* wi = w + static_cast<long>(i) * taps;
+    v8 acc = {0, 0, 0, 0, 0, 0, 0, 0};
+    for (int t = 0; t < taps; ++t) {
+      v4 va, vb;
+      std::memcpy(&va, a + off + t * C, sizeof va);
+      std::memcpy(&vb, b + off + t * C, sizeof vb);
+      acc += wi[t] * __builtin_shufflevector(va, vb, 0, 1, 2, 3, 4, 5, 6, 7);
+    }
+    const v4 ra = __builtin_shufflevector(acc, acc, 0, 1, 2, 3), rb = __builtin_shufflevector(acc, acc, 4, 5, 6, 7);
+    const size_t bytes = (i + 1 < dst ? 4 : C) * sizeof(float);
+    std::memcpy(outa + static_cast<long>(i) * C, &ra, bytes);
+    std::memcpy(outb + static_cast<long>(i) * C, &rb, bytes);
+  }
+}
+
+SPLINEFIG_CLONES
+void horizontal_pair(const float* a, const float* b, const long* first, long lo, const float* w, int taps, int dst,
+                     int C, float* outa, float* outb) {
+  if (taps == 4)
+    horizontal_pair_impl<4>(a, b, first, lo, w, taps, dst, C, outa, outb);
+  else
+    horizontal_pair_impl<0>(a, b, first, lo, w, taps, dst, C, outa, outb);
+}
+
 SPLINEFIG_CLONES
 void horizontal_any(const float* ext, const long* first, long lo, const float* w, int taps, int dst,
                     int C, float* out) {
@@ -273,6 +306,30 @@ void filter_row(const Plan& p, const float* row, float* ext, float* out) {
   horizontal(row, 0, p.ax, r.i0, r.i1, C, out);
 }
 
+// Two source rows filtered horizontally; the interior run goes through the paired loop.
+void filter_row_pair(const Plan& p, const float* a, const float* b, float* ext, float* outa, float* outb) {
+  const RowSplit& r = p.split;
+  if (!r.direct || !(p.C == 3 || p.C == 4)) {
+    filter_row(p, a, ext, outa);
+    filter_row(p, b, ext, outb);
+    return;
+  }
+  const int C = p.C, S = p.src.width;
+  for (auto [row, out] : {std::pair{a, outa}, std::pair{b, outb}}) {
+    if (r.i0 > 0) {
+      fill_extended(row, r.left_lo, r.left_hi, S, C, p.edge, ext);
+      horizontal(ext, r.left_lo, p.ax, 0, r.i0, C, out);
+    }
+    if (r.i1 < p.ax.dst) {
+      fill_extended(row, r.right_lo, r.right_hi, S, C, p.edge, ext);
+      horizontal(ext, r.right_lo, p.ax, r.i1, p.ax.dst, C, out);
+    }
+  }
+  const size_t off = static_cast<size_t>(r.i0);
+  horizontal_pair(a, b, p.ax.first.data() + off, 0, p.ax.w.data() + off * p.ax.taps, p.ax.taps, r.i1 - r.i0, C,
+                  outa + off * C, outb + off * C);
+}
+
 void horizontal_first(const Plan& p, int threads) {
   const int Dy = p.dst.height, Ty = p.ay.taps;
   const size_t drow = p.dst.row_stride();
@@ -281,23 +338,35 @@ void horizontal_first(const Plan& p, int threads) {
     const int y0 = static_cast<int>(static_cast<long>(Dy) * chunk / chunks);
     const int y1 = static_cast<int>(static_cast<long>(Dy) * (chunk + 1) / chunks);
     std::vector<float> ext(p.ext_len());
-    std::vector<float> ring(static_cast<size_t>(Ty) * (drow + 4));
     // Slots are keyed by extended row position, which is consecutive within a window of Ty
-    // rows, so a window never evicts its own rows (keying by source row would: under wrap the
-    // rows S-2 and 0 can share a slot).
-    std::vector<long> held(static_cast<size_t>(Ty), std::numeric_limits<long>::min());
+    // rows; with one slot more than a window, filtering the row after a missing one as well
+    // (a pair, see filter_row_pair) evicts only a row the window has passed. (Keying by source
+    // row would not do: under wrap the rows S-2 and 0 can share a slot.)
+    const long R = Ty + 1;
+    std::vector<float> ring(static_cast<size_t>(R) * (drow + 4));
+    std::vector<long> held(static_cast<size_t>(R), std::numeric_limits<long>::min());
+    auto slot_of = [&](long pos) { return static_cast<size_t>(((pos % R) + R) % R); };
+    auto ring_row = [&](size_t slot) { return ring.data() + slot * (drow + 4); };
+    const long last = p.ay.first[static_cast<size_t>(y1 - 1)] + Ty - 1;  // the chunk's last row
     Taps taps;
     for (int y = y0; y < y1; ++y) {
       taps.gather(p, y);
       for (size_t t = 0; t < taps.rows.size(); ++t) {
         const long pos = taps.pos[t];
-        const size_t slot = static_cast<size_t>(((pos % Ty) + Ty) % Ty);
-        float* h = ring.data() + slot * (drow + 4);
+        const size_t slot = slot_of(pos);
         if (held[slot] != pos) {
-          filter_row(p, taps.rows[t], ext.data(), h);
+          const long next = edge_index(pos + 1, p.src.height, p.edge);
+          const size_t slot2 = slot_of(pos + 1);
+          if (pos + 1 <= last && next >= 0 && held[slot2] != pos + 1) {
+            filter_row_pair(p, taps.rows[t], p.src.row(static_cast<int>(next)), ext.data(), ring_row(slot),
+                            ring_row(slot2));
+            held[slot2] = pos + 1;
+          } else {
+            filter_row(p, taps.rows[t], ext.data(), ring_row(slot));
+          }
           held[slot] = pos;
         }
-        taps.rows[t] = h;
+        taps.rows[t] = ring_row(slot);
       }
       vertical(taps.rows.data(), taps.w.data(), static_cast<int>(taps.rows.size()), drow, p.dst.row(y), p.stream);
     }
