@@ -58,8 +58,8 @@ int run(const Options& o) {
   const Points data = read_points(in, "stdin");
   const std::size_t need = o.ends == "periodic" ? 3 : 2;
   if (data.size() < need)
-    throw Failure("stdin: " + std::to_string(data.size()) + " data points, --ends " + o.ends + " needs at least " +
-                  std::to_string(need));
+    throw Failure("stdin: " + std::to_string(data.size()) + (data.size() == 1 ? " data point" : " data points") +
+                  ", --ends " + o.ends + " needs at least " + std::to_string(need));
   Interpolant s;
   if (o.ends == "relaxed") {
     s = interpolate_relaxed(data);
