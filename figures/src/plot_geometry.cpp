@@ -10,6 +10,7 @@ Occupancy::Occupancy(int width, int height)
     : w_(std::max(1, width)), h_(std::max(1, height)), cells_(static_cast<size_t>(w_) * h_, 0) {}
 
 void Occupancy::mark_point(Vec2 p, double radius) {
+  if (!(std::abs(p.x) < 1e6 && std::abs(p.y) < 1e6 && radius < 1e4)) return;  // far off the canvas
   int x0 = std::max(0, static_cast<int>(std::floor(p.x - radius)));
   int x1 = std::min(w_ - 1, static_cast<int>(std::floor(p.x + radius)));
   int y0 = std::max(0, static_cast<int>(std::floor(p.y - radius)));
@@ -33,8 +34,10 @@ void Occupancy::mark_polyline(const std::vector<Vec2>& pts, double radius) {
 }
 
 void Occupancy::mark_rect(const Rect& r, int weight) {
-  int x0 = std::max(0, static_cast<int>(std::floor(r.left))), x1 = std::min(w_ - 1, static_cast<int>(std::ceil(r.right)));
-  int y0 = std::max(0, static_cast<int>(std::floor(r.top))), y1 = std::min(h_ - 1, static_cast<int>(std::ceil(r.bottom)));
+  int x0 = static_cast<int>(std::clamp(std::floor(r.left), 0.0, w_ - 1.0));
+  int x1 = static_cast<int>(std::clamp(std::ceil(r.right), -1.0, w_ - 1.0));
+  int y0 = static_cast<int>(std::clamp(std::floor(r.top), 0.0, h_ - 1.0));
+  int y1 = static_cast<int>(std::clamp(std::ceil(r.bottom), -1.0, h_ - 1.0));
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
       auto& c = cells_[static_cast<size_t>(y) * w_ + x];
@@ -43,18 +46,21 @@ void Occupancy::mark_rect(const Rect& r, int weight) {
 }
 
 long Occupancy::count(const Rect& r) const {
-  long n = 0;
-  int x0 = static_cast<int>(std::floor(r.left)), x1 = static_cast<int>(std::ceil(r.right));
-  int y0 = static_cast<int>(std::floor(r.top)), y1 = static_cast<int>(std::ceil(r.bottom));
+  // Cells off the canvas count 4 each (worse than data); the rest count if marked.
+  const double area = std::max(0.0, std::ceil(r.right) - std::floor(r.left) + 1) *
+                      std::max(0.0, std::ceil(r.bottom) - std::floor(r.top) + 1);
+  if (!(area < 1e9)) return 1L << 40;
+  int x0 = static_cast<int>(std::clamp(std::floor(r.left), 0.0, w_ - 1.0));
+  int x1 = static_cast<int>(std::clamp(std::ceil(r.right), -1.0, w_ - 1.0));
+  int y0 = static_cast<int>(std::clamp(std::floor(r.top), 0.0, h_ - 1.0));
+  int y1 = static_cast<int>(std::clamp(std::ceil(r.bottom), -1.0, h_ - 1.0));
+  long on = 0, n = 0;
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
-      if (x < 0 || y < 0 || x >= w_ || y >= h_) {
-        n += 4;  // off the canvas: worse than data
-        continue;
-      }
+      ++on;
       n += cells_[static_cast<size_t>(y) * w_ + x] ? 1 : 0;
     }
-  return n;
+  return n + 4 * (static_cast<long>(area) - on);
 }
 
 std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& pts, bool closed, const Rect& r) {
