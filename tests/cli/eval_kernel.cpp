@@ -176,7 +176,7 @@ TEST_CASE("kernel rejects bad ranges and specs") {
   check_fails({"kernel", "--basis", "catmull-rom", "--step"}, "", "--step");
 }
 
-An unknown subcommand is one clear line, --help works on every subcommand") {
+TEST_CASE("An unknown subcommand is one clear line, --help works on every subcommand") {
   check_fails({"bogus"}, "", "unknown command 'bogus'");
   const auto top = run({"--help"});
   REQUIRE(top.code == 0);

@@ -121,7 +121,7 @@ TEST_CASE("resample cli: 8-bit PNG is filtered in linear light and re-encoded as
   CHECK(std::lround(rgba.data[3] * 255) == 128);
 }
 
-resample cli: same size with --interpolating returns the PNG, threads do not change it") {
+TEST_CASE("resample cli: same size with --interpolating returns the PNG, threads do not change it") {
   const fs::path dir = scratch();
   std::vector<float> px(40 * 30 * 3);
   for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>((i * 7919 % 256) / 255.0);
@@ -137,7 +137,7 @@ resample cli: same size with --interpolating returns the PNG, threads do not cha
   CHECK(t1.data == t2.data);
 }
 
-resample cli: EXR keeps its channels and names, 16-bit PNG stays 16-bit") {
+TEST_CASE("resample cli: EXR keeps its channels and names, 16-bit PNG stays 16-bit") {
   const fs::path dir = scratch();
   std::vector<float> px(6 * 4 * 5);
   for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>(i) * 0.25f - 3;

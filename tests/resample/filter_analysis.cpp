@@ -211,7 +211,7 @@ TEST_CASE("Mitchell-Netravali B,C placement of cardinal, Duff and Beta kernels")
   }
 }
 
-filter specs: basis specs plus box, tent, lanczos3, unknown names are errors") {
+TEST_CASE("filter specs: basis specs plus box, tent, lanczos3, unknown names are errors") {
   CHECK(parse_filter("beta:b1=2").spec == "beta:b1=2,b2=0");
   CHECK(parse_filter("lanczos3").support.hi == 3);
   CHECK_THROWS_WITH(parse_filter("gauss"), Catch::Contains("unknown filter 'gauss'"));

@@ -150,7 +150,7 @@ TEST_CASE("The memo's polygon method: its spacing error falls as 1/grain^2") {
   CHECK(polygon_length(c, 1024) < L);  // a chord is never longer than its arc
 }
 
-Evenly spaced points: first and last are the curve's ends, closed curves close") {
+TEST_CASE("Evenly spaced points: first and last are the curve's ends, closed curves close") {
   Points k(3);
   for (auto p : {std::array<double, 3>{0, 0, 0}, {4, 0, 1}, {4, 3, 2}, {0, 3, 1}, {-1, 1, 0}})
     k.push_back(std::vector<double>(p.begin(), p.end()));

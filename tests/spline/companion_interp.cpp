@@ -236,7 +236,7 @@ TEST_CASE("The 1-4-1 solve is accurate for long inputs (residual of every equati
     for (std::size_t c = 0; c < 3; ++c) CHECK(P[4 * i][c] == S[i][c]);
 }
 
-Seed 003 §8: relaxed basis functions are 1 at their knot, 0 at the others, DD-5") {
+TEST_CASE("Seed 003 §8: relaxed basis functions are 1 at their knot, 0 at the others, DD-5") {
   const Interpolant f = relaxed_basis(4);
   REQUIRE(f.data.dim == 5);
   for (int j = 0; j <= 4; ++j) {

@@ -138,7 +138,7 @@ TEST_CASE("Spaced curves interpolate the knots and are C1 in the spaced paramete
   CHECK(!parse_knot_spacing("Chordal"));
 }
 
-Centripetal pieces never cusp or cross themselves, uniform ones do on the same data") {
+TEST_CASE("Centripetal pieces never cusp or cross themselves, uniform ones do on the same data") {
   std::mt19937 rng(20110401);
   int uniform_bad = 0, chordal_bad = 0;
   for (int trial = 0; trial < 300; ++trial) {

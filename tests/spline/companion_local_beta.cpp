@@ -111,7 +111,7 @@ TEST_CASE("Changing the values at one knot changes only the two pieces that meet
     }
 }
 
-Local betas follow make_curve's end modes, bad values are refused with their knots") {
+TEST_CASE("Local betas follow make_curve's end modes, bad values are refused with their knots") {
   const Points k = zigzag();
   std::vector<ShapeParameters> betas(k.size());
   betas[1] = {2, 3};

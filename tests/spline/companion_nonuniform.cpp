@@ -145,7 +145,7 @@ TEST_CASE("Clamped cubic with 4 control points is the Bezier curve, with its der
   }
 }
 
-Derivatives on uniform knots match the uniform matrix path, repeated knots drop continuity") {
+TEST_CASE("Derivatives on uniform knots match the uniform matrix path, repeated knots drop continuity") {
   const Points P = random_points(8, 2, 8);
   const BSplineCurve c{3, uniform_knots(8, 3), P};
   const Curve u = make_curve(bspline(), P, Ends::open);  // t in [0, 5] is knot parameter t + 3

@@ -44,7 +44,7 @@ TEST_CASE("Seed 002: one segment refines to 3 + 2^k points: 4, 5, 7, 11, 19") {
   CHECK(refine_closed(random_points(5, 2, 3)).size() == 10);
 }
 
-Seed 002: the first step is 1/8 [4 4 0 0, 1 6 1 0, 0 4 4 0, 0 1 6 1, 0 0 4 4]") {
+TEST_CASE("Seed 002: the first step is 1/8 [4 4 0 0, 1 6 1 0, 0 4 4 0, 0 1 6 1, 0 0 4 4]") {
   const Points r = refine(unit_points(4));
   check_coefficients(r[0], {4, 4, 0, 0}, 8);
   check_coefficients(r[1], {1, 6, 1, 0}, 8);

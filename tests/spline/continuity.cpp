@@ -43,7 +43,7 @@ TEST_CASE("Cardinal splines are C1 and not C2 at their joints, tangent a(x[i+1] 
   CHECK(parametric_continuity(make_curve(catmull_rom(), k, Ends::closed)) == 1);
 }
 
-The B-spline is C2 at its joints, open and closed, degree 1 and 2 are C0 and C1") {
+TEST_CASE("The B-spline is C2 at its joints, open and closed, degree 1 and 2 are C0 and C1") {
   const Points k = zigzag();
   CHECK(parametric_continuity(make_curve(bspline(), k, Ends::open)) == 2);
   CHECK(parametric_continuity(make_curve(bspline(), k, Ends::closed)) == 2);

@@ -53,7 +53,7 @@ TEST_CASE("Seed 002: B-spline P(1/2) = (P0+23P1+23P2+P3)/48 and P(3/4) = (P0+121
   check_point(s[4], combo(0, 1, 4, 1, 6), 1e-12);
 }
 
-Catmull-Rom at u = 1/2 is (-x0 + 9x1 + 9x2 - x3)/16, cardinal gives (-a, 4+a, 4+a, -a)/8") {
+TEST_CASE("Catmull-Rom at u = 1/2 is (-x0 + 9x1 + 9x2 - x3)/16, cardinal gives (-a, 4+a, 4+a, -a)/8") {
   Points k(1);
   for (double x : {3.0, -5.0, 7.0, 11.0}) k.push_back(std::vector<double>{x});
   const double cr = (-3.0 + 9 * -5.0 + 9 * 7.0 - 11.0) / 16;
@@ -116,7 +116,7 @@ TEST_CASE("A knot of multiplicity 3 pulls the B-spline onto it, with zero veloci
   check_point(at(c, 2, 1), {0, 0}, 1e-14);
 }
 
-Derivatives at joints: (x[i+1]-x[i-1])/2 for Catmull-Rom and B-spline, x[i-1]-2x[i]+x[i+1] for B") {
+TEST_CASE("Derivatives at joints: (x[i+1]-x[i-1])/2 for Catmull-Rom and B-spline, x[i-1]-2x[i]+x[i+1] for B") {
   const Points k = points2({{0, 1}, {2, 5}, {3, -1}, {7, 2}, {8, 8}, {4, 9}});
   const Curve cr = make_curve(catmull_rom(), k, Ends::open);
   const Curve bs = make_curve(bspline(), k, Ends::open);

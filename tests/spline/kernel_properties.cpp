@@ -91,7 +91,7 @@ TEST_CASE("Degree-n kernels are the Cox-de Boor B-splines, centred by h = (n-1)/
   }
 }
 
-Exact kernel values: Catmull-Rom 9/16, -1/16, B-spline 23/48, 1/48, cardinal (4+a)/8, -a/8") {
+TEST_CASE("Exact kernel values: Catmull-Rom 9/16, -1/16, B-spline 23/48, 1/48, cardinal (4+a)/8, -a/8") {
   const Basis cr = catmull_rom(), bs = bspline();
   CHECK(kernel(cr, 0.5) == 9.0 / 16);
   CHECK(kernel(cr, -0.5) == 9.0 / 16);
