@@ -102,3 +102,30 @@ TEST_CASE("elements: pixel-space primitives, even-odd holes and the legend's ser
   CHECK(series[3].label == "limit");
   CHECK(series[3].kind == "rule");
 }
+
+TEST_CASE("elements: data far outside the canvas (1e12) is clipped, not a hang or a crash") {
+  FigureSpec spec = parse_spec(R"(
+[canvas]
+width = 200
+height = 150
+[axes]
+x_range = [0, 1]
+y_range = [0, 1]
+[[axes.curve]]
+knots = [[0, 0], [1e12, 1], [0.5, -1e12], [1, 1], [0.2, 0.3]]
+label = "far"
+label_position = "inline"
+[[axes.series]]
+points = [[1e12, 1e12], [0.5, 0.5], [-1e12, 3]]
+style = "line+markers"
+label = "far too"
+[[polyline]]
+points = [[-1e12, 5], [1e12, 100]]
+width = 2
+)",
+                               "far.toml");
+  RenderedFigure r = render_figure(spec, {1, 1});
+  CHECK(r.image.width == 200);
+  // The pixel-space line from (-1e12, 5) to (1e12, 100) crosses x = 100 at y = 52.5.
+  CHECK(r.image.pixel(100, 52)[0] < 0.1f);
+}
