@@ -306,16 +306,21 @@ void filter_row(const Plan& p, const float* row, float* ext, float* out) {
   horizontal(row, 0, p.ax, r.i0, r.i1, C, out);
 }
 
-// Two source rows filtered horizontally; the interior run goes through the paired loop.
-void filter_row_pair(const Plan& p, const float* a, const float* b, float* ext, float* outa, float* outb) {
+// Source rows a and b (b may be null) filtered horizontally into outa and outb. With 3 or 4
+// channels the interior runs go through the paired loop, a lone row paired with itself (its
+// twin written to `spare`): every row then takes the same instructions whether it was paired
+// or not, which keeps results independent of how threads cut the image into bands (a separate
+// single-row loop may contract multiply-adds differently).
+void filter_rows(const Plan& p, const float* a, const float* b, float* ext, float* outa, float* outb, float* spare) {
   const RowSplit& r = p.split;
   if (!r.direct || !(p.C == 3 || p.C == 4)) {
     filter_row(p, a, ext, outa);
-    filter_row(p, b, ext, outb);
+    if (b) filter_row(p, b, ext, outb);
     return;
   }
   const int C = p.C, S = p.src.width;
   for (auto [row, out] : {std::pair{a, outa}, std::pair{b, outb}}) {
+    if (!row) continue;
     if (r.i0 > 0) {
       fill_extended(row, r.left_lo, r.left_hi, S, C, p.edge, ext);
       horizontal(ext, r.left_lo, p.ax, 0, r.i0, C, out);
@@ -326,8 +331,8 @@ void filter_row_pair(const Plan& p, const float* a, const float* b, float* ext, 
     }
   }
   const size_t off = static_cast<size_t>(r.i0);
-  horizontal_pair(a, b, p.ax.first.data() + off, 0, p.ax.w.data() + off * p.ax.taps, p.ax.taps, r.i1 - r.i0, C,
-                  outa + off * C, outb + off * C);
+  horizontal_pair(a, b ? b : a, p.ax.first.data() + off, 0, p.ax.w.data() + off * p.ax.taps, p.ax.taps,
+                  r.i1 - r.i0, C, outa + off * C, (b ? outb : spare) + off * C);
 }
 
 void horizontal_first(const Plan& p, int threads) {
@@ -340,11 +345,12 @@ void horizontal_first(const Plan& p, int threads) {
     std::vector<float> ext(p.ext_len());
     // Slots are keyed by extended row position, which is consecutive within a window of Ty
     // rows; with one slot more than a window, filtering the row after a missing one as well
-    // (a pair, see filter_row_pair) evicts only a row the window has passed. (Keying by source
+    // (a pair, see filter_rows) evicts only a row the window has passed. (Keying by source
     // row would not do: under wrap the rows S-2 and 0 can share a slot.)
     const long R = Ty + 1;
     std::vector<float> ring(static_cast<size_t>(R) * (drow + 4));
     std::vector<long> held(static_cast<size_t>(R), std::numeric_limits<long>::min());
+    std::vector<float> spare(drow + 4);
     auto slot_of = [&](long pos) { return static_cast<size_t>(((pos % R) + R) % R); };
     auto ring_row = [&](size_t slot) { return ring.data() + slot * (drow + 4); };
     const long last = p.ay.first[static_cast<size_t>(y1 - 1)] + Ty - 1;  // the chunk's last row
@@ -358,11 +364,11 @@ void horizontal_first(const Plan& p, int threads) {
           const long next = edge_index(pos + 1, p.src.height, p.edge);
           const size_t slot2 = slot_of(pos + 1);
           if (pos + 1 <= last && next >= 0 && held[slot2] != pos + 1) {
-            filter_row_pair(p, taps.rows[t], p.src.row(static_cast<int>(next)), ext.data(), ring_row(slot),
-                            ring_row(slot2));
+            filter_rows(p, taps.rows[t], p.src.row(static_cast<int>(next)), ext.data(), ring_row(slot),
+                        ring_row(slot2), spare.data());
             held[slot2] = pos + 1;
           } else {
-            filter_row(p, taps.rows[t], ext.data(), ring_row(slot));
+            filter_rows(p, taps.rows[t], nullptr, ext.data(), ring_row(slot), nullptr, spare.data());
           }
           held[slot] = pos;
         }

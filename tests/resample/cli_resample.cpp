@@ -63,6 +63,15 @@ Read read(const fs::path& p) {
   return r;
 }
 
+// A path in double quotes for the shell (built up by appending: GCC 12 warns falsely about
+// "literal" + std::string temporaries).
+std::string q(const fs::path& p) {
+  std::string s = "\"";
+  s += p.string();
+  s += '"';
+  return s;
+}
+
 double srgb_encode(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055; }
 
 }  // namespace
@@ -71,7 +80,7 @@ TEST_CASE("resample cli: bad input gives one line, a non-zero exit and no output
   const fs::path dir = scratch();
   const fs::path in = dir / "in.png", out = dir / "bad-out.png";
   write(in, 8, 6, 3, OIIO::TypeDesc::UINT8, std::vector<float>(8 * 6 * 3, 0.5f));
-  const std::string I = "\"" + in.string() + "\"", O = " -o \"" + out.string() + "\"";
+  const std::string I = q(in), O = " -o " + q(out);
   const std::pair<std::string, std::string> cases[] = {
       {I + O + " --scale 2 --filter gauss", "unknown filter 'gauss'"},
       {I + O + " --size 0x5 --filter bspline", "--size width"},
@@ -79,8 +88,8 @@ TEST_CASE("resample cli: bad input gives one line, a non-zero exit and no output
       {I + O + " --scale -2 --filter bspline", "must be positive"},
       {I + O + " --scale 0.01 --filter bspline", "becomes 0"},
       {I + O + " --scale 2 --filter beta:b1=5 --interpolating", "no stable inverse"},
-      {"\"" + (dir / "missing.png").string() + "\"" + O + " --scale 2 --filter bspline", "missing.png"},
-      {I + " -o \"" + (dir / "out.jpg").string() + "\" --scale 2 --filter bspline", "unsupported output format"},
+      {q(dir / "missing.png") + O + " --scale 2 --filter bspline", "missing.png"},
+      {I + " -o " + q(dir / "out.jpg") + " --scale 2 --filter bspline", "unsupported output format"},
   };
   for (const auto& [args, what] : cases) {
     INFO(args);
@@ -96,7 +105,7 @@ TEST_CASE("resample cli: bad input gives one line, a non-zero exit and no output
     std::string bytes((std::istreambuf_iterator<char>(src)), std::istreambuf_iterator<char>());
     std::ofstream(dir / "cut.png", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   }
-  const Run r = run("\"" + (dir / "cut.png").string() + "\"" + O + " --scale 2 --filter bspline");
+  const Run r = run(q(dir / "cut.png") + O + " --scale 2 --filter bspline");
   CHECK(r.code != 0);
   CHECK_FALSE(fs::exists(out));
   for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
@@ -106,14 +115,14 @@ TEST_CASE("resample cli: 8-bit PNG is filtered in linear light and re-encoded as
   const fs::path dir = scratch();
   // Black and white averaged by a box: linear 0.5, which sRGB encodes as code 188, not 128.
   write(dir / "bw.png", 2, 1, 1, OIIO::TypeDesc::UINT8, {0.0f, 1.0f});
-  REQUIRE(run("\"" + (dir / "bw.png").string() + "\" -o \"" + (dir / "bw-1.png").string() + "\" --size 1x1 --filter box").code == 0);
+  REQUIRE(run(q(dir / "bw.png") + " -o " + q(dir / "bw-1.png") + " --size 1x1 --filter box").code == 0);
   const Read bw = read(dir / "bw-1.png");
   CHECK(bw.spec.format == OIIO::TypeDesc::UINT8);
   CHECK(std::lround(bw.data[0] * 255) == std::lround(srgb_encode(0.5) * 255));
   // Straight alpha is premultiplied for filtering: opaque red next to transparent green
   // averages to red at half coverage, with no green.
   write(dir / "rgba.png", 2, 1, 4, OIIO::TypeDesc::UINT8, {1, 0, 0, 1, 0, 1, 0, 0});
-  REQUIRE(run("\"" + (dir / "rgba.png").string() + "\" -o \"" + (dir / "rgba-1.png").string() + "\" --size 1x1 --filter box").code == 0);
+  REQUIRE(run(q(dir / "rgba.png") + " -o " + q(dir / "rgba-1.png") + " --size 1x1 --filter box").code == 0);
   const Read rgba = read(dir / "rgba-1.png");
   REQUIRE(rgba.spec.nchannels == 4);
   CHECK(rgba.data[0] == 1.0f);
@@ -126,11 +135,11 @@ TEST_CASE("resample cli: same size with --interpolating returns the PNG, threads
   std::vector<float> px(40 * 30 * 3);
   for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>((i * 7919 % 256) / 255.0);
   write(dir / "noise.png", 40, 30, 3, OIIO::TypeDesc::UINT8, px);
-  const std::string I = "\"" + (dir / "noise.png").string() + "\"";
-  REQUIRE(run(I + " -o \"" + (dir / "same.png").string() + "\" --size 40x30 --filter bspline --interpolating --edge mirror").code == 0);
+  const std::string I = q(dir / "noise.png");
+  REQUIRE(run(I + " -o " + q(dir / "same.png") + " --size 40x30 --filter bspline --interpolating --edge mirror").code == 0);
   CHECK(read(dir / "same.png").data == read(dir / "noise.png").data);
-  REQUIRE(run(I + " -o \"" + (dir / "t1.exr").string() + "\" --scale 2.5,1.5 --filter catmull-rom --threads 1").code == 0);
-  REQUIRE(run(I + " -o \"" + (dir / "t2.exr").string() + "\" --scale 2.5,1.5 --filter catmull-rom --threads 2").code == 0);
+  REQUIRE(run(I + " -o " + q(dir / "t1.exr") + " --scale 2.5,1.5 --filter catmull-rom --threads 1").code == 0);
+  REQUIRE(run(I + " -o " + q(dir / "t2.exr") + " --scale 2.5,1.5 --filter catmull-rom --threads 2").code == 0);
   const Read t1 = read(dir / "t1.exr"), t2 = read(dir / "t2.exr");
   CHECK(t1.spec.width == 100);
   CHECK(t1.spec.height == 45);
@@ -142,17 +151,17 @@ TEST_CASE("resample cli: EXR keeps its channels and names, 16-bit PNG stays 16-b
   std::vector<float> px(6 * 4 * 5);
   for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>(i) * 0.25f - 3;
   write(dir / "five.exr", 6, 4, 5, OIIO::TypeDesc::FLOAT, px, {"R", "G", "B", "Z", "mask"});
-  REQUIRE(run("\"" + (dir / "five.exr").string() + "\" -o \"" + (dir / "five-2.exr").string() + "\" --scale 2 --filter tent").code == 0);
+  REQUIRE(run(q(dir / "five.exr") + " -o " + q(dir / "five-2.exr") + " --scale 2 --filter tent").code == 0);
   const Read five = read(dir / "five-2.exr");
   CHECK(five.spec.nchannels == 5);
   CHECK(five.spec.channelnames == std::vector<std::string>{"R", "G", "B", "Z", "mask"});
   CHECK(five.spec.format == OIIO::TypeDesc::FLOAT);
   CHECK(five.spec.width == 12);
-  const Run png5 = run("\"" + (dir / "five.exr").string() + "\" -o \"" + (dir / "five.png").string() + "\" --scale 2 --filter tent");
+  const Run png5 = run(q(dir / "five.exr") + " -o " + q(dir / "five.png") + " --scale 2 --filter tent");
   CHECK(png5.code != 0);
   CHECK(png5.err.find("1 to 4 channels") != std::string::npos);
   write(dir / "deep.png", 5, 5, 1, OIIO::TypeDesc::UINT16, std::vector<float>(25, 0.3f));
-  REQUIRE(run("\"" + (dir / "deep.png").string() + "\" -o \"" + (dir / "deep-2.png").string() + "\" --scale 2 --filter bspline").code == 0);
+  REQUIRE(run(q(dir / "deep.png") + " -o " + q(dir / "deep-2.png") + " --scale 2 --filter bspline").code == 0);
   const Read deep = read(dir / "deep-2.png");
   CHECK(deep.spec.format == OIIO::TypeDesc::UINT16);
   CHECK(deep.data[0] == Approx(0.3).margin(1.0 / 65535));
