@@ -67,15 +67,36 @@ template <int TAPS>
 inline void horizontal_pair_impl(const float* a, const float* b, const long* first, long lo, const float* w,
                                  int taps, int dst, int C, float* outa, float* outb) {
   if (TAPS > 0) taps = TAPS;
-  for (int i = 0; i < dst; ++i) {
-    const long off = (first[i] - lo) * C;
-    const float* wi = w + static_cast<long>(i) * taps;
+  // Four output pixels per step: four independent chains of multiply-adds hide their latency;
+  // each pixel still sums its taps in order, so the grouping does not change its value.
+  constexpr int G = 4;
+  int i = 0;
+  for (; i + G < dst; i += G) {
+    v8 acc[G];
+    for (int g = 0; g < G; ++g) acc[g] = v8{0, 0, 0, 0, 0, 0, 0, 0};
+    for (int t = 0; t < taps; ++t)
+      for (int g = 0; g < G; ++g) {
+        const long off = (first[i + g] - lo + t) * C;
+        v4 va, vb;
+        std::memcpy(&va, a + off, sizeof va);
+        std::memcpy(&vb, b + off, sizeof vb);
+        acc[g] += w[static_cast<long>(i + g) * taps + t] * __builtin_shufflevector(va, vb, 0, 1, 2, 3, 4, 5, 6, 7);
+      }
+    for (int g = 0; g < G; ++g) {
+      const v4 ra = __builtin_shufflevector(acc[g], acc[g], 0, 1, 2, 3);
+      const v4 rb = __builtin_shufflevector(acc[g], acc[g], 4, 5, 6, 7);
+      std::memcpy(outa + static_cast<long>(i + g) * C, &ra, sizeof ra);
+      std::memcpy(outb + static_cast<long>(i + g) * C, &rb, sizeof rb);
+    }
+  }
+  for (; i < dst; ++i) {
     v8 acc = {0, 0, 0, 0, 0, 0, 0, 0};
     for (int t = 0; t < taps; ++t) {
+      const long off = (first[i] - lo + t) * C;
       v4 va, vb;
-      std::memcpy(&va, a + off + t * C, sizeof va);
-      std::memcpy(&vb, b + off + t * C, sizeof vb);
-      acc += wi[t] * __builtin_shufflevector(va, vb, 0, 1, 2, 3, 4, 5, 6, 7);
+      std::memcpy(&va, a + off, sizeof va);
+      std::memcpy(&vb, b + off, sizeof vb);
+      acc += w[static_cast<long>(i) * taps + t] * __builtin_shufflevector(va, vb, 0, 1, 2, 3, 4, 5, 6, 7);
     }
     const v4 ra = __builtin_shufflevector(acc, acc, 0, 1, 2, 3), rb = __builtin_shufflevector(acc, acc, 4, 5, 6, 7);
     const size_t bytes = (i + 1 < dst ? 4 : C) * sizeof(float);
