@@ -9,13 +9,15 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch() {
-  const fs::path dir = fs::path(SPLINEFIG_BINARY_DIR) / "test-resample-cli";
+// One directory per test case: ctest runs them in parallel.
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(SPLINEFIG_BINARY_DIR) / "test-resample-cli" / name;
   fs::create_directories(dir);
   return dir;
 }
@@ -26,7 +28,8 @@ struct Run {
 };
 
 Run run(const std::string& args) {
-  const fs::path err = scratch() / "stderr.txt";
+  const fs::path err = fs::path(SPLINEFIG_BINARY_DIR) / "test-resample-cli" /
+                       ("stderr-" + std::to_string(::getpid()) + ".txt");
   const std::string cmd = std::string("\"") + SPLINEFIG_EXE + "\" resample " + args + " 2> \"" + err.string() + "\"";
   const int status = std::system(cmd.c_str());
   std::ifstream in(err);
@@ -77,7 +80,7 @@ double srgb_encode(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::
 }  // namespace
 
 TEST_CASE("resample cli: bad input gives one line, a non-zero exit and no output file") {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch("bad-input");
   const fs::path in = dir / "in.png", out = dir / "bad-out.png";
   write(in, 8, 6, 3, OIIO::TypeDesc::UINT8, std::vector<float>(8 * 6 * 3, 0.5f));
   const std::string I = q(in), O = " -o " + q(out);
@@ -112,7 +115,7 @@ TEST_CASE("resample cli: bad input gives one line, a non-zero exit and no output
 }
 
 TEST_CASE("resample cli: 8-bit PNG is filtered in linear light and re-encoded as sRGB") {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch("colour");
   // Black and white averaged by a box: linear 0.5, which sRGB encodes as code 188, not 128.
   write(dir / "bw.png", 2, 1, 1, OIIO::TypeDesc::UINT8, {0.0f, 1.0f});
   REQUIRE(run(q(dir / "bw.png") + " -o " + q(dir / "bw-1.png") + " --size 1x1 --filter box").code == 0);
@@ -131,7 +134,7 @@ TEST_CASE("resample cli: 8-bit PNG is filtered in linear light and re-encoded as
 }
 
 TEST_CASE("resample cli: same size with --interpolating returns the PNG, threads do not change it") {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch("identity");
   std::vector<float> px(40 * 30 * 3);
   for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>((i * 7919 % 256) / 255.0);
   write(dir / "noise.png", 40, 30, 3, OIIO::TypeDesc::UINT8, px);
@@ -147,7 +150,7 @@ TEST_CASE("resample cli: same size with --interpolating returns the PNG, threads
 }
 
 TEST_CASE("resample cli: EXR keeps its channels and names, 16-bit PNG stays 16-bit") {
-  const fs::path dir = scratch();
+  const fs::path dir = scratch("channels");
   std::vector<float> px(6 * 4 * 5);
   for (size_t i = 0; i < px.size(); ++i) px[i] = static_cast<float>(i) * 0.25f - 3;
   write(dir / "five.exr", 6, 4, 5, OIIO::TypeDesc::FLOAT, px, {"R", "G", "B", "Z", "mask"});

@@ -19,8 +19,10 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-fs::path render(const std::string& names) {
-  const fs::path dir = fs::path(SPLINEFIG_BINARY_DIR) / "test-resample-figures";
+// Each test case renders into its own directory: ctest runs them in parallel, and `figures`
+// writes index.json next to the images.
+fs::path render(const std::string& names, const std::string& where) {
+  const fs::path dir = fs::path(SPLINEFIG_BINARY_DIR) / "test-resample-figures" / where;
   fs::create_directories(dir);
   const std::string cmd = std::string("\"") + SPLINEFIG_EXE + "\" figures --out \"" + dir.string() + "\" --only " + names + " > /dev/null";
   REQUIRE(std::system(cmd.c_str()) == 0);
@@ -93,7 +95,7 @@ double rms(const Picture& p, int x0, int y0, int n, double cx, double cy, double
 }  // namespace
 
 TEST_CASE("filter figures: kernels, response and step match their references and show the analysis") {
-  const fs::path dir = render("filter-kernels filter-response filter-step");
+  const fs::path dir = render("filter-kernels filter-response filter-step", "plots");
   for (const char* name : {"filter-kernels", "filter-response", "filter-step"}) {
     INFO(name);
     const std::string cmd = std::string("\"") + SPLINEFIG_EXE + "\" diff \"" SPLINEFIG_SOURCE_DIR "/tests/reference/figures/" +
@@ -133,7 +135,7 @@ TEST_CASE("filter figures: kernels, response and step match their references and
 }
 
 TEST_CASE("filter figures: the zone plate tiles show each filter's blur and aliasing") {
-  const fs::path dir = render("filter-zoneplate filter-downsample");
+  const fs::path dir = render("filter-zoneplate filter-downsample", "zoneplates");
   // Tiles are 256 px at left = 20 + 280 c, top = 64 + 300 r (the specs' explicit boxes).
   auto tile = [](int i) { return std::pair{20 + 280 * (i % 4), 64 + 300 * (i / 4)}; };
   {
