@@ -30,3 +30,23 @@ TEST_CASE("splinefig render writes PNG and EXR, scaled, identical across thread 
   for ([[maybe_unused]] auto& e : fs::directory_iterator(dir)) ++files;
   CHECK(files == 3);
 }
+
+TEST_CASE("splinefig figures --specs: good specs render, a bad one is reported and left out") {
+  auto dir = scratch("figures-specs");
+  fs::create_directories(dir / "specs");
+  std::ofstream(dir / "specs" / "good.toml") << "title = \"Good\"\ncaption = \"fine\"\n[canvas]\nwidth = 64\nheight = 48\n"
+                                                "[[polyline]]\npoints = [[4, 4], [60, 44]]\nwidth = 2\n";
+  std::ofstream(dir / "specs" / "bad.toml") << "[canvas]\nwidth = 64\nheight = 48\n[[polyline]]\npoints = []\n";
+  auto r = run(exe() + " figures --specs " + (dir / "specs").string() + " --out " + (dir / "out").string());
+  CHECK(r.code != 0);
+  CHECK(r.out.find("bad.toml:5: polyline[0].points: empty polyline") != std::string::npos);
+  CHECK(r.out.find("1 of 2 figures failed") != std::string::npos);
+  CHECK(r.out.find("  good ") != std::string::npos);  // the progress line
+  CHECK(fs::exists(dir / "out" / "good.png"));
+  CHECK_FALSE(fs::exists(dir / "out" / "bad.png"));
+  Json index = parse_json(read_file(dir / "out" / "index.json"));
+  REQUIRE(index["figures"].size() == 1);
+  CHECK(index["figures"][0]["name"].string == "good");
+  CHECK(index["figures"][0]["width"].number == 64);
+  CHECK(index["figures"][0]["axes"].size() == 0);
+}
