@@ -168,19 +168,27 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y1, Sink& 
   std::size_t next = 0, step = 0;
   int left = base_;
   live_.clear();
+  double first_end = y1;  // the lowest tb among the live spans
+  const int mask = s_->rule == FillRule::EvenOdd ? 1 : ~0;  // inside(w) is (w & mask) != 0
   for (std::size_t e = 0; e + 1 < events_.size(); ++e) {
     const double ya = events_[e], yb = events_[e + 1];
     if (!(yb > ya)) continue;
     while (step < steps_.size() && steps_[step].y <= ya) left += steps_[step++].delta;
     // Close the spans that ended, open those that start.
-    std::size_t n = 0;
-    while (n < live_.size() && live_[n].tb >= yb) ++n;
-    for (std::size_t l = n; l < live_.size(); ++l) {
-      const Live& L = live_[l];
-      if (L.tb >= yb) live_[n++] = L;
-      else if (L.sign != 0) emit(spans_[L.span], L.open_y, ya, L.sign, sink);
+    if (first_end < yb) {
+      std::size_t n = 0;
+      first_end = y1;
+      for (std::size_t l = 0; l < live_.size(); ++l) {
+        const Live& L = live_[l];
+        if (L.tb >= yb) {
+          first_end = std::min(first_end, L.tb);
+          live_[n++] = L;
+        } else if (L.sign != 0) {
+          emit(spans_[L.span], L.open_y, ya, L.sign, sink);
+        }
+      }
+      live_.resize(n);
     }
-    live_.resize(n);
     for (; next < pending_.size() && pending_[next].first <= ya; ++next) {
       const Span& s = spans_[pending_[next].second];
       Live L;
@@ -192,6 +200,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y1, Sink& 
       L.tb = s.tb;
       L.open_y = ya;
       L.load(v, L.k);
+      first_end = std::min(first_end, L.tb);
       live_.push_back(L);
     }
     // x at mid-height, then insertion sort by (x, span): linear when the order barely changed.
@@ -211,10 +220,10 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y1, Sink& 
       live_[j] = key;
     }
     int w = left;
-    bool before = inside(w);
+    bool before = (w & mask) != 0;
     for (Live& L : live_) {
       w += L.dir;
-      const bool after = inside(w);
+      const bool after = (w & mask) != 0;
       const int sign = before == after ? 0 : (after ? 1 : -1);
       before = after;
       if (sign != L.sign) {
