@@ -62,11 +62,11 @@ void StripSweep::build_spans(double y0, double y1) {
     s.xmax = std::max(s.xmax, xb);
     spans_.push_back(s);
   }
+  pending_.clear();
+  for (std::uint32_t i = 0; i < spans_.size(); ++i) pending_.push_back({spans_[i].xmin, i});
+  sort_small(pending_.begin(), pending_.end());
   byx_.resize(spans_.size());
-  for (std::uint32_t i = 0; i < byx_.size(); ++i) byx_[i] = i;
-  std::sort(byx_.begin(), byx_.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return spans_[a].xmin < spans_[b].xmin || (spans_[a].xmin == spans_[b].xmin && a < b);
-  });
+  for (std::size_t i = 0; i < byx_.size(); ++i) byx_[i] = pending_[i].second;
 }
 
 // The events of the cluster byx_[c0, c1), sorted and distinct: the strip's ends, where its
@@ -89,7 +89,7 @@ void StripSweep::cluster_events(std::size_t c0, std::size_t c1, double y0, doubl
     for (std::size_t j = i + 1; j < c1 && spans_[byx_[j]].xmin <= a.xmax; ++j) crossings(a, spans_[byx_[j]]);
   }
   if (events_.size() > 2) {
-    std::sort(events_.begin(), events_.end());
+    sort_small(events_.begin(), events_.end());
     events_.erase(std::unique(events_.begin(), events_.end()), events_.end());
   }
 }
@@ -106,7 +106,7 @@ void StripSweep::add_steps(std::size_t c0, std::size_t c1, double y0, double y1)
     if (s.tb < y1) steps_.push_back({s.tb, -s.dir});
   }
   if (steps_.size() == n) return;
-  std::sort(steps_.begin(), steps_.end());
+  sort_small(steps_.begin(), steps_.end());
   std::size_t m = 0;
   for (std::size_t i = 0; i < steps_.size();) {
     Step st = steps_[i++];

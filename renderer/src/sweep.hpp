@@ -23,9 +23,26 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace splinefig::render::detail {
+
+// Sorts [first, last) by `less`; insertion sort for the few elements a strip usually has.
+template <class It, class Less = std::less<>>
+void sort_small(It first, It last, Less less = {}) {
+  if (last - first < 2) return;
+  if (last - first > 16) {
+    std::sort(first, last, less);
+    return;
+  }
+  for (It i = first + 1; i != last; ++i) {
+    auto key = *i;
+    It j = i;
+    for (; j != first && less(key, *(j - 1)); --j) *j = *(j - 1);
+    *j = key;
+  }
+}
 
 struct Shape {
   std::size_t chain_begin = 0, chain_end = 0;  // in Geometry::chains, sorted by ymin
@@ -164,7 +181,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y1, Sink& 
   // Spans by the height where they start; each is live from its ta to its tb.
   pending_.clear();
   for (std::size_t c = c0; c < c1; ++c) pending_.push_back({spans_[byx_[c]].ta, byx_[c]});
-  std::sort(pending_.begin(), pending_.end());
+  sort_small(pending_.begin(), pending_.end());
   std::size_t next = 0, step = 0;
   int left = base_;
   live_.clear();
