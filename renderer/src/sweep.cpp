@@ -2,37 +2,6 @@
 
 namespace splinefig::render::detail {
 
-// Drops finished chains, adds those starting before the strip's bottom. False if none is left.
-bool StripSweep::update_active(double y0, double y1) {
-  const auto& ch = g_->chains;
-  const auto& v = g_->verts;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < active_.size(); ++i) {
-    if (ch[active_[i]].ymax > y0) {
-      active_[n] = active_[i];
-      cursor_[n] = cursor_[i];
-      ++n;
-    }
-  }
-  active_.resize(n);
-  cursor_.resize(n);
-  while (next_ < s_->chain_end && ch[next_].ymin < y1) {
-    const Chain& c = ch[next_];
-    if (c.ymax > y0) {
-      // first edge whose lower end is below y0 (binary search: bands may start mid-chain)
-      std::size_t lo = c.first, hi = c.last - 1;
-      while (lo < hi) {
-        std::size_t mid = (lo + hi) / 2;
-        if (v[mid + 1].y <= y0) lo = mid + 1; else hi = mid;
-      }
-      active_.push_back(next_);
-      cursor_.push_back(lo);
-    }
-    ++next_;
-  }
-  return !active_.empty();
-}
-
 // One span per active chain meeting the strip: its height range and x range there; byx_
 // lists them by xmin.
 void StripSweep::build_spans(double y0, double y1) {

@@ -22,6 +22,7 @@
 #include "chains.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -62,6 +63,7 @@ class StripSweep {
     next_ = s.chain_begin;
     active_.clear();
     cursor_.clear();
+    first_end_ = INFINITY;
   }
 
   // Strips must come in increasing y order. Returns false once nothing is left below.
@@ -129,6 +131,7 @@ class StripSweep {
   std::size_t next_ = 0;
   std::vector<std::size_t> active_;  // chain indices
   std::vector<std::size_t> cursor_;  // per active chain: first edge not entirely above
+  double first_end_ = INFINITY;      // the lowest ymax among the active chains
   std::vector<Span> spans_;
   std::vector<std::uint32_t> byx_;   // spans_ by xmin: clusters are runs of overlapping x ranges
   std::vector<double> events_;       // of the current cluster
@@ -137,6 +140,43 @@ class StripSweep {
   std::vector<std::pair<double, std::uint32_t>> pending_;  // the cluster's spans by ta
   std::vector<Live> live_;           // the current sub-strip's spans, left to right
 };
+
+// Drops finished chains, adds those starting before the strip's bottom. False if none is left.
+inline bool StripSweep::update_active(double y0, double y1) {
+  const auto& ch = g_->chains;
+  const auto& v = g_->verts;
+  if (first_end_ <= y0) {
+    std::size_t n = 0;
+    first_end_ = INFINITY;
+    for (std::size_t i = 0; i < active_.size(); ++i) {
+      const double ymax = ch[active_[i]].ymax;
+      if (ymax > y0) {
+        first_end_ = std::min(first_end_, ymax);
+        active_[n] = active_[i];
+        cursor_[n] = cursor_[i];
+        ++n;
+      }
+    }
+    active_.resize(n);
+    cursor_.resize(n);
+  }
+  while (next_ < s_->chain_end && ch[next_].ymin < y1) {
+    const Chain& c = ch[next_];
+    if (c.ymax > y0) {
+      // first edge whose lower end is below y0 (binary search: bands may start mid-chain)
+      std::size_t lo = c.first, hi = c.last - 1;
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        if (v[mid + 1].y <= y0) lo = mid + 1; else hi = mid;
+      }
+      active_.push_back(next_);
+      cursor_.push_back(lo);
+      first_end_ = std::min(first_end_, c.ymax);
+    }
+    ++next_;
+  }
+  return !active_.empty();
+}
 
 template <class Sink>
 void StripSweep::emit(const Span& s, double ya, double yb, double sign, Sink& sink) const {
