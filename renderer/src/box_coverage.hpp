@@ -43,7 +43,6 @@ struct BoxRow {
   void edge(double xa, double ya, double xb, double yb, double s) {
     const double dy = yb - ya;
     if (xa > xb) std::swap(xa, xb);  // the region right of the edge does not depend on direction
-    const int W = width;
     int i0 = column(xa), i1 = column(xb);
     if (i1 > i0 && static_cast<double>(i1) == xb) --i1;  // ends exactly on a column boundary
     cmin = std::min(cmin, i0);
