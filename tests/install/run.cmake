@@ -1,5 +1,5 @@
 # Installs the built tree into a scratch prefix, then configures, builds and runs a tiny
-# consumer project that uses find_package(splinefig) and splinefig::spline.
+# consumer project that uses find_package(splinefig) and links every exported target.
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix
   RESULT_VARIABLE rc OUTPUT_QUIET)
