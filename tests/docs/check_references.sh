@@ -4,7 +4,8 @@
 #     names below) or points to a numbered issue of some tracker;
 #  2. every relative markdown link in a .md file ([text](path), [text](path#anchor), images,
 #     reference-style definitions) names a file of the repository, and an anchor names a
-#     heading of that file (GitHub's rule: lower case, punctuation dropped, spaces -> '-').
+#     heading of that file (GitHub's rule: lower case, punctuation dropped, spaces -> '-');
+#  3. README.md links every page of docs/.
 # Files are those git tracks, or, outside a git checkout, every file but build output.
 #
 #   check_references.sh ROOT          check the tree at ROOT; exit 0 clean, 1 with one line
@@ -86,6 +87,20 @@ check_tree() {
     done < <(links "$root/$md")
   done
 
+  # 3. The README links every page of docs/.
+  if [ -f "$root/README.md" ]; then
+    local listed
+    listed=$(links "$root/README.md" | cut -f2 | sed 's/#.*//' | while IFS= read -r t; do
+      [ -n "$t" ] && realpath -m --relative-to="$root" "$root/$t"; done)
+    for md in "${files[@]}"; do
+      case "$md" in docs/*.md) ;; *) continue ;; esac
+      if ! printf '%s\n' "$listed" | grep -qxF "$md"; then
+        echo "README.md: does not link $md"
+        problems=$((problems + 1))
+      fi
+    done
+  fi
+
   if [ $problems -gt 0 ]; then
     echo "check_references: $problems reference(s) do not resolve inside the repository" >&2
     return 1
@@ -143,7 +158,7 @@ self_test() {
   trap 'rm -rf "$tmp"' RETURN
   local w
   w=$(pattern_words)
-  mkdir -p "$tmp/good/docs" "$tmp/bad1/docs" "$tmp/bad2/docs" "$tmp/bad3/docs" "$tmp/bad4"
+  mkdir -p "$tmp/good/docs" "$tmp/bad1/docs" "$tmp/bad2/docs" "$tmp/bad3/docs" "$tmp/bad4" "$tmp/bad5"
   # A clean tree: links to files, anchors, directories, external links, links inside code.
   cat > "$tmp/good/README.md" <<'EOF'
 # Top
@@ -160,16 +175,17 @@ EOF
   cp -r "$tmp/good/." "$tmp/bad2/"; echo "[gone](docs/rules.md#no-such-heading)" >> "$tmp/bad2/README.md"
   cp -r "$tmp/good/." "$tmp/bad3/"; printf '// see %s\n' "$(echo "$w" | cut -d'|' -f1 | tr -d '\\')" > "$tmp/bad3/code.cpp"
   cp -r "$tmp/good/." "$tmp/bad4/"; printf '# the workloads of issue 4\n' > "$tmp/bad4/bench.cpp"
+  cp -r "$tmp/good/." "$tmp/bad5/"; printf '# Orphan\n' > "$tmp/bad5/docs/orphan.md"
   if ! check_tree "$tmp/good" >/dev/null; then
     echo "self-test: a clean tree was rejected:"; check_tree "$tmp/good"; rc=1
   fi
   local b
-  for b in bad1 bad2 bad3 bad4; do
+  for b in bad1 bad2 bad3 bad4 bad5; do
     if check_tree "$tmp/$b" >/dev/null 2>&1; then
       echo "self-test: tree $b has a dangling reference but passed"; rc=1
     fi
   done
-  [ $rc -eq 0 ] && echo "self-test: the check accepts the clean tree and rejects all four bad ones"
+  [ $rc -eq 0 ] && echo "self-test: the check accepts the clean tree and rejects all five bad ones"
   return $rc
 }
 
