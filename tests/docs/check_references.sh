@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every reference in the tree resolves inside the tree:
 #  1. no file names a design document that is not part of the repository (the all-capitals
-#     names below) or points to a numbered issue of some tracker;
+#     names below) or points to a numbered issue of some tracker, and every plain mention of
+#     docs/NAME.md names a page that exists;
 #  2. every relative markdown link in a .md file ([text](path), [text](path#anchor), images,
 #     reference-style definitions) names a file of the repository, and an anchor names a
 #     heading of that file (GitHub's rule: lower case, punctuation dropped, spaces -> '-');
@@ -51,6 +52,17 @@ check_tree() {
     printf '%s\n' "$hits" | sed 's/^\([^:]*:[0-9]*\):.*/\1: refers to a document or issue outside the repository/'
     problems=$((problems + $(printf '%s\n' "$hits" | wc -l)))
   fi
+
+  # Plain mentions of a page of docs/ (in comments, help texts, specs) name an existing page.
+  local mention
+  while IFS= read -r mention; do
+    local f=${mention%%:*} rest=${mention#*:}
+    local n=${rest%%:*} page=${rest#*:}
+    if [ ! -f "$root/$page" ]; then
+      echo "$f:$n: mentions $page, which the repository does not hold"
+      problems=$((problems + 1))
+    fi
+  done < <(cd "$root" && printf '%s\0' "${files[@]}" | xargs -0 grep -H -I -n -o -E 'docs/[A-Za-z0-9_./-]+\.md' -- 2>/dev/null)
 
   # 2. Markdown links. awk prints "LINE<TAB>TARGET" for every relative link outside code.
   local md target line path anchor dir resolved
@@ -158,7 +170,7 @@ self_test() {
   trap 'rm -rf "$tmp"' RETURN
   local w
   w=$(pattern_words)
-  mkdir -p "$tmp/good/docs" "$tmp/bad1/docs" "$tmp/bad2/docs" "$tmp/bad3/docs" "$tmp/bad4" "$tmp/bad5"
+  mkdir -p "$tmp/good/docs" "$tmp/bad1/docs" "$tmp/bad2/docs" "$tmp/bad3/docs" "$tmp/bad4" "$tmp/bad5" "$tmp/bad6"
   # A clean tree: links to files, anchors, directories, external links, links inside code.
   cat > "$tmp/good/README.md" <<'EOF'
 # Top
@@ -176,16 +188,17 @@ EOF
   cp -r "$tmp/good/." "$tmp/bad3/"; printf '// see %s\n' "$(echo "$w" | cut -d'|' -f1 | tr -d '\\')" > "$tmp/bad3/code.cpp"
   cp -r "$tmp/good/." "$tmp/bad4/"; printf '# the workloads of issue 4\n' > "$tmp/bad4/bench.cpp"
   cp -r "$tmp/good/." "$tmp/bad5/"; printf '# Orphan\n' > "$tmp/bad5/docs/orphan.md"
+  cp -r "$tmp/good/." "$tmp/bad6/"; printf '// see docs/nothere.md\n' > "$tmp/bad6/code.cpp"
   if ! check_tree "$tmp/good" >/dev/null; then
     echo "self-test: a clean tree was rejected:"; check_tree "$tmp/good"; rc=1
   fi
   local b
-  for b in bad1 bad2 bad3 bad4 bad5; do
+  for b in bad1 bad2 bad3 bad4 bad5 bad6; do
     if check_tree "$tmp/$b" >/dev/null 2>&1; then
       echo "self-test: tree $b has a dangling reference but passed"; rc=1
     fi
   done
-  [ $rc -eq 0 ] && echo "self-test: the check accepts the clean tree and rejects all five bad ones"
+  [ $rc -eq 0 ] && echo "self-test: the check accepts the clean tree and rejects all six bad ones"
   return $rc
 }
 
