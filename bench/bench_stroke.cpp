@@ -1,5 +1,5 @@
 // Stroke rasterization: splinefig (one thread and all cores) against Cairo and AGG on the
-// workloads of issue 4, 1024x1024, opaque black on white, canvas cleared every iteration.
+// stroke workloads A, B and C, 1024x1024, opaque black on white, canvas cleared every iteration.
 //   A1, A3: 100,000 separate segments (each its own path, butt caps), width 1 and 3.
 //   B:      one open polyline of 1,000,000 points (a 3:4 Lissajous), width 1.5, round joins.
 //   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).

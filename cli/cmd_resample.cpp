@@ -1,5 +1,5 @@
 // `splinefig resample`: resize an image with a spline basis function as the reconstruction
-// filter (CONTRACT.md, docs/resample.md).
+// filter (docs/cli.md, docs/resample.md).
 #include "command.hpp"
 #include "csv.hpp"
 

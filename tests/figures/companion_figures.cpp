@@ -1,4 +1,4 @@
-// FIGURES.md's checks for the companion figures (seeds 002 and 003, local-betas), read off the
+// docs/figures.md's checks for the companion figures (seeds 002 and 003, local-betas), read off the
 // PNG and index.json that `splinefig figures` writes. Expected points are worked out by hand
 // (comments give the arithmetic) from the seeds, not taken from the code.
 #include <catch2/catch.hpp>
@@ -57,7 +57,7 @@ void check_reference(const std::string& name) {
 
 }  // namespace
 
-TEST_CASE("companion figures show FIGURES.md's checks") {
+TEST_CASE("companion figures show their documented checks") {
   SECTION("s003-fig01: the degree-10 Lagrange polynomial swings to 2.76 and 3.17 near the ends") {
     const Rendered f = render("s003-fig01");
     // P(1/2) = 362017/131072, P(19/2) = 415701/131072 (exact rational arithmetic).

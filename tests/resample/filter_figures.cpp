@@ -1,4 +1,4 @@
-// The filter figures (FIGURES.md), rendered by `splinefig figures`: three against reference
+// The filter figures (docs/figures.md), rendered by `splinefig figures`: three against reference
 // PNGs, and every one checked for what it must show: the curves where the analysis puts them,
 // and the blur and aliasing of each filter measured in the rendered tiles.
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // The built-in figures (figures/specs/*.toml) and what `splinefig figures` writes besides
-// the images: index.json (CONTRACT.md) and the gallery page index.html.
+// the images: index.json (docs/figures.md) and the gallery page index.html.
 #include <splinefig/figures/figure.hpp>
 
 #include <string>

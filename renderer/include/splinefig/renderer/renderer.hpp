@@ -2,7 +2,7 @@
 // splinefig's renderer: exact-area antialiased drawing into linear-light float images.
 // No spline knowledge here. Geometry (paths, strokes, dashes) -> coverage -> pixels.
 //
-// Conventions (CONTRACT.md): (0,0) is the top-left corner of the top-left pixel, y down,
+// Conventions (docs/conventions.md): (0,0) is the top-left corner of the top-left pixel, y down,
 // pixel (i,j) has centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha
 // at the API; the image holds premultiplied linear RGBA float32, composited with
 // Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.

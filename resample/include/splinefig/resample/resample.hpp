@@ -1,6 +1,6 @@
 #pragma once
 // Image resampling with a spline basis function (or box, tent, lanczos3) as the reconstruction
-// filter. The contract (CONTRACT.md, docs/resample.md), per axis with S source and D destination
+// filter. The contract (docs/resample.md), per axis with S source and D destination
 // pixels:
 //   output pixel i has its centre at i + 1/2, which maps to the source position x = (i+1/2) S/D;
 //   the filter is widened by f = max(1, S/D) (only when reducing);

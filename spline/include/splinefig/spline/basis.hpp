@@ -37,10 +37,10 @@ Basis tensioned_bspline(double a);            // B_a (Duff); a > 0... any finite
 Basis beta(double b1, double b2);             // B_{b1,b2} (Barsky); throws SpecError where d = 0
 Basis uniform_bspline(int degree);            // degree >= 1, seed 002's m_ij formula
 
-// Parses NAME[:key=value[,key=value...]] (CONTRACT.md). Throws SpecError.
+// Parses NAME[:key=value[,key=value...]] (docs/conventions.md). Throws SpecError.
 Basis parse_basis(std::string_view spec);
 
-// The basis function k(s) (CONTRACT.md kernel convention): a curve is
+// The basis function k(s) (docs/conventions.md kernel convention): a curve is
 // X(t) = sum_j x[j] k(t - j). For a cubic with columns c_0..c_3 of U M:
 // k(s) = c_3(s+2) on [-2,-1), c_2(s+1) on [-1,0), c_1(s) on [0,1), c_0(s-1) on [1,2].
 // For degree n, the piece between knots i and i+1 uses x[i-h] .. x[i-h+n] with

@@ -3,7 +3,7 @@
 //
 // The memo: "the basis functions for splines turn out to be interesting filter functions".
 // A Filter is a kernel k(s) of finite support used as X(t) = sum_j x[j] k(t - j) (the kernel
-// convention of CONTRACT.md; asymmetric Beta kernels keep their orientation). Every basis spec
+// convention of docs/conventions.md; asymmetric Beta kernels keep their orientation). Every basis spec
 // is a filter; `box`, `tent` and `lanczos3` are there for comparison.
 //
 // The analysis is pure math over doubles:
