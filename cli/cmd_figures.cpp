@@ -4,6 +4,7 @@
 
 #include <splinefig/figures/catalog.hpp>
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/image/io.hpp>
 #include <splinefig/version.hpp>
 
 #include <atomic>
@@ -105,12 +106,12 @@ int run(const FiguresArgs& a) {
         fig::FigureSpec spec = fig::load_spec(s.path);
         fig::check_scaled_canvas(spec, a.scale, "--scale");
         fig::RenderedFigure r = fig::render_figure(spec, {a.scale, raster_threads});
-        splinefig::render::WriteOptions w;
+        splinefig::WriteOptions w;
         w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
         w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
         for (const auto& f : formats) {
           std::string file = s.name + "." + f;
-          splinefig::render::write_image(r.image, (fs::path(a.out) / file).string(), w);
+          splinefig::write_image((fs::path(a.out) / file).string(), r.image, w);
           r.info.files.push_back(file);
         }
         const double ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
