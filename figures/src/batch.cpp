@@ -1,5 +1,6 @@
 // A pool of figure workers whose results come back in spec order (see batch.hpp).
 #include <splinefig/figures/batch.hpp>
+#include <splinefig/image/io.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -28,12 +29,12 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     const FigureSpec spec = load_spec(s.path);
     check_scaled_canvas(spec, o.scale, "--scale");
     RenderedFigure r = render_figure(spec, {o.scale, raster_threads});
-    render::WriteOptions w;
+    WriteOptions w;
     w.software = o.software;
     w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
     for (const auto& format : o.formats) {
       const std::string file = s.name + "." + format;
-      render::write_image(r.image, (std::filesystem::path(o.out_dir) / file).string(), w);
+      write_image((std::filesystem::path(o.out_dir) / file).string(), r.image, w);
       r.info.files.push_back(file);
     }
     result.info = std::move(r.info);

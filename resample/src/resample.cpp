@@ -462,6 +462,7 @@ void resample_into(const Image& src_in, Image& dst, const Filter& f, const Resam
 Image resample(const Image& src, int width, int height, const Filter& f, const ResampleOptions& opt) {
   if (width < 1 || height < 1) throw std::invalid_argument("resample: the output size is zero");
   Image dst(width, height, src.channels);
+  dst.copy_metadata_from(src);
   resample_into(src, dst, f, opt);
   return dst;
 }

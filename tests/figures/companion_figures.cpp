@@ -46,7 +46,7 @@ void check_reference(const std::string& name) {
   const std::string src = SPLINEFIG_SOURCE_DIR;
   splinefig::figures::FigureSpec spec = splinefig::figures::load_spec(src + "/figures/specs/" + name + ".toml");
   splinefig::figures::RenderedFigure r = splinefig::figures::render_figure(spec, {1, 0});
-  auto img = splinefig::compare::Image::from_linear_rgba(r.image.width, r.image.height, r.image.rgba.data());
+  const splinefig::Image& img = r.image;
   splinefig::testing::Tolerance tol;
   tol.fail = 0.1f;
   tol.failpercent = 0.01f;

@@ -7,6 +7,7 @@
 
 #include <splinefig/figures/catalog.hpp>
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/image/io.hpp>
 #include <splinefig/testing.hpp>
 
 #include <filesystem>
@@ -19,7 +20,7 @@ void check_reference(const std::string& name) {
   const std::string src = SPLINEFIG_SOURCE_DIR;
   figures::FigureSpec spec = figures::load_spec(src + "/figures/specs/" + name + ".toml");
   figures::RenderedFigure r = figures::render_figure(spec, {1, 0});
-  auto img = compare::Image::from_linear_rgba(r.image.width, r.image.height, r.image.rgba.data());
+  const Image& img = r.image;
   testing::Tolerance tol;
   tol.fail = 0.1f;
   tol.failpercent = 0.01f;
@@ -51,8 +52,8 @@ TEST_CASE("a figure moved by one pixel fails its reference") {
   const auto& b = info.axes.at(0).pixel_box;
   ax.box = std::array<double, 4>{b[0] + 1, b[1], b[2] + 1, b[3]};
   figures::RenderedFigure r = figures::render_figure(spec, {1, 0});
-  auto img = compare::Image::from_linear_rgba(r.image.width, r.image.height, r.image.rgba.data());
-  compare::Image expected = compare::load_image(src + "/tests/reference/figures/cbasis.png");
+  const Image& img = r.image;
+  Image expected = read_image(src + "/tests/reference/figures/cbasis.png");
   compare::Options o;
   o.thresholds.fail = 0.1f;
   o.thresholds.failpercent = 0.01f;
@@ -67,7 +68,7 @@ TEST_CASE("figures are identical for any thread count") {
     figures::RenderedFigure one = figures::render_figure(spec, {1, 1});
     figures::RenderedFigure two = figures::render_figure(spec, {1, 2});
     figures::RenderedFigure five = figures::render_figure(spec, {1, 5});
-    CHECK(one.image.rgba == two.image.rgba);
-    CHECK(one.image.rgba == five.image.rgba);
+    CHECK(one.image.pixels == two.image.pixels);
+    CHECK(one.image.pixels == five.image.pixels);
   }
 }

@@ -2,6 +2,7 @@
 // at before it was kept. The test renders the scene again, writes it as PNG and compares the
 // 8-bit pixels: at most 2/255 per channel anywhere (text: FreeType versions may differ, so a
 // mean of 1/255 and a max of 96/255). SPLINEFIG_UPDATE_REFERENCES=1 rewrites the references.
+#include <splinefig/image/io.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
 #include <catch2/catch.hpp>
@@ -37,12 +38,12 @@ void check_reference(const std::string& name, sr::Scene& scene, bool text = fals
   const fs::path ref = fs::path(SPLINEFIG_SOURCE_DIR) / "tests/reference/renderer" / (name + ".png");
   auto img = sr::rasterize(scene, 2);
   if (std::getenv("SPLINEFIG_UPDATE_REFERENCES")) {
-    sr::write_image(img, ref.string(), {"splinefig", "renderer reference: " + name});
+    splinefig::write_image(ref.string(), img, {.software = "splinefig", .description = "renderer reference: " + name});
     SUCCEED("rewrote " << ref);
     return;
   }
   const fs::path out = fs::temp_directory_path() / ("splinefig-ref-" + std::to_string(::getpid()) + "-" + name + ".png");
-  sr::write_image(img, out.string());
+  splinefig::write_image(out.string(), img);
   int w = 0, h = 0, rw = 0, rh = 0;
   auto got = read_png(out.string(), w, h);
   auto want = read_png(ref.string(), rw, rh);
