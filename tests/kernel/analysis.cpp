@@ -202,6 +202,20 @@ TEST_CASE("Mitchell-Netravali B,C placement of cardinal, Duff and Beta kernels")
   CHECK_FALSE(mitchell_netravali(parse_kernel("uniform-bspline:degree=5")));
   CHECK_FALSE(mitchell_netravali(parse_kernel("tent")));
   CHECK_FALSE(mitchell_netravali(parse_kernel("lanczos3")));
+  // A member's spec names it; parse_basis reads the spec back to the same matrix.
+  for (auto [B, C] : {std::pair{0.2, 0.4}, {1.0 / 3, 1.0 / 3}, {0.0, 0.5}, {1.5, -0.25}}) {
+    const Basis mn = mitchell_netravali_basis(B, C);
+    INFO(mn.spec);
+    const Basis back = parse_basis(mn.spec);
+    CHECK(back.spec == mn.spec);
+    CHECK(back.m == mn.m);
+    const auto p = mitchell_netravali(parse_kernel(mn.spec));
+    REQUIRE(p);
+    CHECK(p->b == Approx(B).margin(1e-15));
+    CHECK(p->c == Approx(C).margin(1e-15));
+  }
+  CHECK(parse_basis("mitchell-netravali").spec == mitchell_netravali_basis(1.0 / 3, 1.0 / 3).spec);
+  CHECK_THROWS_WITH(parse_basis("mitchell-netravali:b=1,d=2"), Catch::Contains("unknown parameter 'd'"));
   // The family matrix against Mitchell and Netravali's piecewise formula, at B = C = 1/3.
   const double B = 1.0 / 3, C = 1.0 / 3;
   const Kernel m = basis_kernel(mitchell_netravali_basis(B, C));

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <type_traits>
 
 using namespace splinefig;
 
@@ -163,6 +164,34 @@ TEST_CASE("weights: double precision, normalised, widened only when reducing") {
     CHECK(s == Approx(1).margin(1e-6));
   }
   CHECK_THROWS_AS(resample(random_image(4, 4, 1, 1), 0, 3, parse_kernel("bspline")), std::invalid_argument);
+}
+
+TEST_CASE("axis weights depend on the kernel and the sizes only: the edge mode decides what the taps read") {
+  // The table takes no edge mode (every mode keeps all taps in the sum).
+  static_assert(std::is_invocable_r_v<AxisWeights, decltype(&axis_weights), const Kernel&, int, int>);
+  // So black edges give the share of the (normalised) weights that fall inside the image:
+  // a 10x1 image of ones, doubled in width, predicted from the tables alone.
+  const Kernel k = parse_kernel("bspline");
+  const AxisWeights ax = axis_weights(k, 10, 20), ay = axis_weights(k, 1, 1);
+  double wy = 0;
+  for (int t = 0; t < ay.taps; ++t)
+    if (ay.first[0] + t == 0) wy = ay.w[static_cast<size_t>(t)];
+  Image ones(10, 1, 1);
+  std::fill(ones.pixels.begin(), ones.pixels.end(), 1.0f);
+  for (Edge e : {Edge::clamp, Edge::mirror, Edge::wrap, Edge::black}) {
+    INFO(edge_name(e));
+    ResampleOptions opt;
+    opt.edge = e;
+    const Image out = resample(ones, 20, 1, k, opt);
+    for (int i = 0; i < 20; ++i) {
+      double inside = 0;
+      for (int t = 0; t < ax.taps; ++t) {
+        const long j = ax.first[static_cast<size_t>(i)] + t;
+        if (j >= 0 && j < 10) inside += ax.w[static_cast<size_t>(i * ax.taps + t)];
+      }
+      CHECK(out.at(i, 0, 0) == Approx(e == Edge::black ? inside * wy : 1.0).margin(1e-6));
+    }
+  }
 }
 
 TEST_CASE("edge modes map positions as the contract draws them") {
