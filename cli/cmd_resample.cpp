@@ -5,7 +5,7 @@
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/filter_analysis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -44,9 +44,9 @@ int scaled(int src, double s, const char* axis, const std::string& text) {
 }
 
 int run(const Options& o) {
-  Filter filter;
+  Kernel filter;
   try {
-    filter = parse_filter(o.filter);
+    filter = parse_kernel(o.filter);
   } catch (const SpecError& e) {
     throw Failure(std::string("--filter: ") + e.what());
   }

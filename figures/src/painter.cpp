@@ -5,6 +5,7 @@
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/image/srgb.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
 #include <map>
@@ -82,24 +83,7 @@ render::TextExtent Painter::measure(const std::string& s, const Font& f) const {
   return e;
 }
 
-render::PixelFilter pixel_filter(const std::string& spec) {
-  if (spec == "box") return render::PixelFilter::box();
-  if (spec == "tent") return render::PixelFilter::tent();
-  Basis b = parse_basis(spec);
-  // The kernel's pieces on unit intervals, in ascending powers of the local variable:
-  // piece p is column n - p of M (kernel convention), whose u^(n-r) coefficient is M(r, c).
-  render::PixelFilter f;
-  f.kind = render::PixelFilter::Kind::Piecewise;
-  f.lo = kernel_support(b).lo;
-  f.name = b.spec;
-  const int n = b.degree;
-  for (int p = 0; p <= n; ++p) {
-    std::vector<double> coeffs(static_cast<size_t>(n + 1));
-    for (int r = 0; r <= n; ++r) coeffs[n - r] = b(r, n - p);
-    f.pieces.push_back(std::move(coeffs));
-  }
-  return f;
-}
+Kernel pixel_filter(const std::string& spec) { return parse_kernel(spec); }
 
 Vec2 raster_size(const Raster& r) {
   if (r.file.empty()) return {static_cast<double>(r.width), static_cast<double>(r.height)};
@@ -212,7 +196,7 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
 
 }  // namespace
 
-Image paint(const Painter& p, int width, int height, Color background, const render::PixelFilter& filter,
+Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,
                     int threads) {
   const double s = p.scale();
   Image result;

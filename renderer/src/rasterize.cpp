@@ -80,7 +80,7 @@ Image rasterize(const Scene& scene, int threads) {
     img.pixels[i + 3] = bg.a;
   }
 
-  const bool box = scene.filter_.kind == PixelFilter::Kind::Box;
+  const bool box = exact_area(scene.filter_);
   FilterGrid grid = box ? FilterGrid{} : make_filter_grid(scene.filter_, W, H);
   Box clip = box ? Box{0, 0, static_cast<double>(W), static_cast<double>(H)} : grid.clip;
   Vec2 shift = box ? Vec2{0, 0} : Vec2{grid.delta, grid.delta};

@@ -158,13 +158,10 @@ TEST_CASE("reference: markers and disks") {
 }
 
 TEST_CASE("reference: the same shapes under box, tent and cubic B-spline pixel filters") {
-  sr::PixelFilter bspline;
-  bspline.kind = sr::PixelFilter::Kind::Piecewise;
-  bspline.lo = -2;
-  bspline.pieces = {{0, 0, 0, 1.0 / 6}, {1.0 / 6, 0.5, 0.5, -0.5}, {4.0 / 6, 0, -1, 0.5}, {1.0 / 6, -0.5, 0.5, -1.0 / 6}};
-  bspline.name = "bspline";
+  const auto bspline = splinefig::Kernel::piecewise(
+      "bspline", -2, {{0, 0, 0, 1.0 / 6}, {1.0 / 6, 0.5, 0.5, -0.5}, {4.0 / 6, 0, -1, 0.5}, {1.0 / 6, -0.5, 0.5, -1.0 / 6}});
   int i = 0;
-  for (auto f : {sr::PixelFilter::box(), sr::PixelFilter::tent(), bspline}) {
+  for (const auto& f : {splinefig::Kernel::box(), splinefig::Kernel::tent(), bspline}) {
     sr::Scene s(64, 64, {1, 1, 1, 1}, f);
     s.stroke_polyline(std::vector<sr::Vec2>{{8, 56}, {20, 8}, {32, 56}, {56, 20}}, false, style(2.5, sr::Join::Round), kInk);
     s.fill_circle({44, 46}, 8, {0.8f, 0.1f, 0.1f, 1});

@@ -13,7 +13,7 @@ namespace sr = splinefig::render;
 
 namespace {
 
-sr::Scene busy_scene(sr::PixelFilter filter) {
+sr::Scene busy_scene(splinefig::Kernel filter) {
   sr::Scene s(150, 130, {1, 1, 1, 1}, filter);
   std::vector<sr::Vec2> curve;
   for (int k = 0; k <= 20000; ++k) {
@@ -47,12 +47,12 @@ sr::Scene busy_scene(sr::PixelFilter filter) {
 }  // namespace
 
 TEST_CASE("output is byte-identical for any thread count") {
-  for (auto filter : {sr::PixelFilter::box(), sr::PixelFilter::tent()}) {
+  for (const auto& filter : {splinefig::Kernel::box(), splinefig::Kernel::tent()}) {
     sr::Scene s = busy_scene(filter);
     auto ref = sr::rasterize(s, 1);
     for (int threads : {2, 3, 7, 0}) {
       auto img = sr::rasterize(s, threads);
-      INFO("filter " << filter.name << ", threads " << threads);
+      INFO("filter " << filter.name() << ", threads " << threads);
       REQUIRE(img.pixels.size() == ref.pixels.size());
       REQUIRE(std::memcmp(img.pixels.data(), ref.pixels.data(), ref.pixels.size() * sizeof(float)) == 0);
     }

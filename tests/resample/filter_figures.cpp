@@ -3,7 +3,8 @@
 // and the blur and aliasing of each filter measured in the rendered tiles.
 #include <catch2/catch.hpp>
 
-#include <splinefig/spline/filter_analysis.hpp>
+#include <splinefig/kernel/analysis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <OpenImageIO/imageio.h>
 
@@ -123,7 +124,7 @@ TEST_CASE("filter figures: kernels, response and step match their references and
     const auto box = index_numbers(dir, "filter-step", "pixel_box");
     const auto xr = index_numbers(dir, "filter-step", "x_range");
     const auto yr = index_numbers(dir, "filter-step", "y_range");
-    const splinefig::Filter cr = splinefig::parse_filter("catmull-rom");
+    const splinefig::Kernel cr = splinefig::parse_kernel("catmull-rom");
     double tmax = 3, vmax = 0;
     for (double t = 3; t <= 5; t += 1e-4)
       if (splinefig::step_value(cr, t - 4) > vmax) vmax = splinefig::step_value(cr, t - 4), tmax = t;

@@ -7,6 +7,7 @@
 // image (splinefig::Image, image/image.hpp) holds premultiplied linear RGBA float32,
 // composited with Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
 #include <splinefig/image/image.hpp>
+#include <splinefig/kernel/kernel.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -42,24 +43,13 @@ struct StrokeStyle {
   double dash_offset = 0.0;
 };
 
-// A separable pixel filter k(x) k(y) given as a piecewise polynomial on unit intervals:
-// piece p covers [lo + p, lo + p + 1) and holds coefficients in ascending powers of the
-// local variable u = x - (lo + p) in [0, 1). Box is the default (exact area coverage).
-// The figures layer converts spline basis functions into this form. A pixel's value is the
-// shape convolved with k(x) k(y) at the pixel centre, divided by (integral of k)^2, computed
-// exactly (see docs/renderer.md).
-struct PixelFilter {
-  enum class Kind { Box, Piecewise } kind = Kind::Box;
-  double lo = -0.5;
-  std::vector<std::vector<double>> pieces;
-  std::string name = "box";
-
-  static PixelFilter box();
-  static PixelFilter tent();  // the linear B-spline, support [-1, 1]
-};
-// Throws std::invalid_argument if `f` is not a usable filter (no pieces, non-finite values,
-// a zero integral, support wider than 8 px).
-void validate(const PixelFilter& f);
+// The pixel filter is a separable k(x) k(y) with k a piecewise-polynomial Kernel
+// (kernel/kernel.hpp; a spline basis function through spline/kernel.hpp). The box (the default)
+// is exact area coverage; otherwise a pixel's value is the shape convolved with k(x) k(y) at
+// the pixel centre, divided by (integral of k)^2, computed exactly (see docs/renderer.md).
+// Throws std::invalid_argument if `k` is not a usable pixel filter (not a polynomial, more than
+// 8 pieces or coefficients per piece, a zero integral).
+void validate_pixel_filter(const Kernel& k);
 
 enum class Marker { Circle, Square, Diamond, Cross, Plus };
 enum class HAlign { Left, Center, Right };
@@ -82,7 +72,7 @@ TextExtent measure_text(std::string_view text, const TextStyle& style);
 // threads, with byte-identical results). Items are composited in the order added.
 class Scene {
  public:
-  Scene(int width, int height, Color background = {1, 1, 1, 1}, PixelFilter filter = PixelFilter::box());
+  Scene(int width, int height, Color background = {1, 1, 1, 1}, Kernel filter = Kernel::box());
 
   void stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color);
   void fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color);
@@ -104,7 +94,7 @@ class Scene {
  private:
   int width_, height_;
   Color background_;
-  PixelFilter filter_;
+  Kernel filter_;
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
 };
