@@ -120,3 +120,24 @@ TEST_CASE("MatchesReference: EXR references hold the linear floats") {
   CHECK(back.pixels == img.pixels);
   CHECK_THAT(img, MatchesReference(ref));
 }
+
+TEST_CASE("MatchesReference: only SPLINEFIG_UPDATE_REFERENCES=1 rewrites a reference") {
+  // Every reference check of the suite goes through this matcher (tests/reference_check.hpp),
+  // so "0", an empty value or any other word must compare, fail on a mismatch and leave the file.
+  const Env env_results("SPLINEFIG_TEST_RESULTS", scratch("matcher-results"));
+  const std::string ref = scratch("matcher-disc3.png");
+  const auto px = disc_rgba(24, 20, 0.8f), other = disc_rgba(24, 20, 0.3f);
+  {
+    const Env update("SPLINEFIG_UPDATE_REFERENCES", "1");
+    CHECK(MatchesReference(ref).match(linear_rgba(24, 20, px.data())));
+  }
+  const auto before = fs::last_write_time(ref);
+  const Image kept = read_image(ref);
+  for (const char* value : {"0", "", "no", "true"}) {
+    INFO("SPLINEFIG_UPDATE_REFERENCES=" << value);
+    const Env update("SPLINEFIG_UPDATE_REFERENCES", value);
+    CHECK_FALSE(MatchesReference(ref, {.fail = 0.01f}).match(linear_rgba(24, 20, other.data())));
+    CHECK(fs::last_write_time(ref) == before);
+    CHECK(read_image(ref).pixels == kept.pixels);
+  }
+}
