@@ -69,6 +69,14 @@ Basis beta(double b1, double b2) {
                 2 * s3 / d, (b2 + 4 * (s2 + b1)) / d, 2 / d, 0});
 }
 
+Basis mitchell_netravali_basis(double b, double c) {
+  return cubic("mitchell-netravali", "mitchell-netravali:b=" + fmt(b) + ",c=" + fmt(c),
+               {(-b - 6 * c) / 6, (12 - 9 * b - 6 * c) / 6, (-12 + 9 * b + 6 * c) / 6, (b + 6 * c) / 6,  //
+                (3 * b + 12 * c) / 6, (-18 + 12 * b + 6 * c) / 6, (18 - 15 * b - 12 * c) / 6, -c,         //
+                (-3 * b - 6 * c) / 6, 0, (3 * b + 6 * c) / 6, 0,                                         //
+                b / 6, (6 - 2 * b) / 6, b / 6, 0});
+}
+
 Basis uniform_bspline(int n) {
   if (n < 1 || n > 20)
     throw SpecError("uniform-bspline: degree=" + std::to_string(n) + " is out of range (1..20)");
@@ -184,8 +192,15 @@ Basis parse_basis(std::string_view spec) {
       throw SpecError("uniform-bspline: degree=" + raw["degree"] + " is out of range (1..20)");
     return uniform_bspline(static_cast<int>(d));
   }
-  throw SpecError("unknown basis '" + std::string(name) +
-                  "' (known: catmull-rom, cardinal, bspline, tensioned-bspline, beta, uniform-bspline)");
+  if (name == "mitchell-netravali") {
+    take({{"b", 1.0 / 3}, {"c", 1.0 / 3}});
+    return mitchell_netravali_basis(params["b"], params["c"]);
+  }
+  throw SpecError("unknown basis '" + std::string(name) + "' (known: " + known_bases() + ")");
+}
+
+std::string known_bases() {
+  return "catmull-rom, cardinal, bspline, tensioned-bspline, beta, uniform-bspline, mitchell-netravali";
 }
 
 double basis_segment(const Basis& b, int c, double u) {
