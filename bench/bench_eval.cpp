@@ -1,7 +1,7 @@
 // Curve evaluation throughput: a 10^6-knot 3-D curve at grain 16 (about 1.6e7 points),
 // Catmull-Rom and B-spline, three ways in the same binary:
 //   eval/<basis>/splinefig   splinefig::sample_into (weight table once, contiguous output)
-//   eval/<basis>/memo        the memo's appendix routine with its bugs fixed (ERRATA.md): a
+//   eval/<basis>/memo        the memo's appendix routine with its bugs fixed (docs/errata.md): a
 //                            Matrix() call per coordinate per point, alpha table per grain
 //   eval/<basis>/glm         glm::catmullRom per point (gtx/spline); GLM has no B-spline, so
 //                            the B-spline uses glm::cubic on the piece's Horner coefficients

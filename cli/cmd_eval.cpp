@@ -1,4 +1,4 @@
-// `splinefig eval`: knots on stdin -> points on the curve on stdout (CONTRACT.md).
+// `splinefig eval`: knots on stdin -> points on the curve on stdout (docs/cli.md).
 #include "command.hpp"
 #include "csv.hpp"
 

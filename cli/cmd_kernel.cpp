@@ -97,7 +97,7 @@ const splinefig::cli::Registration reg{
       app.add_flag("--report", o->report,
                    "Print the filter's integral, continuity, droop, leakage, step response and "
                    "Mitchell-Netravali B,C");
-      app.footer("k is the basis function: a curve is X(t) = sum_j x[j] k(t - j).");
+      app.footer("k is the basis function: a curve is X(t) = sum_j x[j] k(t - j) (see docs/conventions.md).");
       return splinefig::cli::Runner([o, &app] {
         o->range_given = app.count("--from") + app.count("--to") + app.count("--step") > 0;
         return run(*o);

@@ -1,5 +1,5 @@
 #pragma once
-// CSV in and out for every subcommand (CONTRACT.md): one point per line, comma-separated
+// CSV in and out for every subcommand (docs/conventions.md): one point per line, comma-separated
 // coordinates, any dimension >= 1 but the same on every line; blank lines and lines whose
 // first non-blank character is '#' are ignored. Numbers are written as the shortest decimal
 // that reads back to the same double (std::to_chars), so output round-trips exactly.

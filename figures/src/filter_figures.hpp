@@ -1,5 +1,5 @@
 #pragma once
-// Internal: plot elements for the filter figures (docs/resample.md, FIGURES.md "Filter
+// Internal: plot elements for the filter figures (docs/resample.md, docs/figures.md "Filter
 // figures"). Each expands, when the spec is loaded, into ordinary series or images computed by
 // the filter analysis and the resampler, so drawing needs nothing new:
 //   [[axes.filter]]    k(s) of any filter spec (basis specs, box, tent, lanczos3)

@@ -33,7 +33,7 @@ class Occupancy {
   std::vector<std::uint16_t> cells_;
 };
 
-// The look of the guides (FIGURES.md house style).
+// The look of the guides (docs/figures.md, house style).
 struct Guides {
   Color axis = *render::parse_hex_color("#333333");
   Color grid = *render::parse_hex_color("#e6e6e6");

@@ -1,7 +1,7 @@
 #pragma once
 // A stroke as the outline whose nonzero region is exactly the union of the stroke's pieces.
 //
-// The pieces (CONTRACT.md, as SVG 2 defines them): one rectangle of the stroke width per
+// The pieces (docs/conventions.md, as SVG 2 defines them): one rectangle of the stroke width per
 // segment; at each interior vertex a join piece on the outer side of the turn (round: the
 // circular sector between the two outer corners; miter: the quadrilateral up to the miter tip,
 // a bevel instead when miter length / width exceeds the limit; bevel: the triangle); caps at

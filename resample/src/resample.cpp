@@ -487,6 +487,7 @@ void resample_into(const Image& src_in, Image& dst, const Kernel& k, const Resam
 Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt) {
   if (width < 1 || height < 1) throw std::invalid_argument("resample: the output size is zero");
   Image dst(width, height, src.channels);
+  dst.copy_metadata_from(src);
   resample_into(src, dst, k, opt);
   return dst;
 }

@@ -1,4 +1,4 @@
-// `splinefig eval` and `splinefig kernel` as CONTRACT.md specifies them: counts per end mode,
+// `splinefig eval` and `splinefig kernel` as docs/cli.md specifies them: counts per end mode,
 // numbers that read back to the same double, and one stderr line (nothing on stdout) for
 // every kind of bad input.
 #include "cli/run.hpp"

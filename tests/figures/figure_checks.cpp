@@ -1,4 +1,4 @@
-// The figure checks of FIGURES.md, read off the files `splinefig figures` writes: index.json
+// The figure checks of docs/figures.md, read off the files `splinefig figures` writes: index.json
 // says where each axes is and which colour each series has, the PNG shows the pixels. The
 // expected data points are worked out by hand from the memo's matrices (comments give the
 // arithmetic), not taken from the code.

@@ -1,6 +1,6 @@
 #pragma once
 // Helpers for the figures tests: running the CLI, a small JSON reader for index.json, PNG
-// pixels as 8-bit sRGB, and data-to-pixel maps read from index.json (CONTRACT.md).
+// pixels as 8-bit sRGB, and data-to-pixel maps read from index.json (docs/figures.md).
 #include <OpenImageIO/imageio.h>
 
 #include <array>
@@ -204,7 +204,7 @@ inline double share(Rgb p, Rgb c) {
   return distance(p, q) > 40 ? 0.0 : t;  // off the line: some other colour
 }
 
-// Data -> pixel through an index.json axes entry (CONTRACT.md).
+// Data -> pixel through an index.json axes entry (docs/conventions.md).
 struct AxesMap {
   double left, top, right, bottom, x0, x1, y0, y1;
   explicit AxesMap(const Json& axes) {

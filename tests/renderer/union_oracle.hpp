@@ -1,7 +1,7 @@
 #pragma once
 // An independent oracle for exact stroke coverage, sharing no code with the renderer.
 //
-// The stroke is built literally as its pieces (SVG 2 / CONTRACT.md): a rectangle per segment,
+// The stroke is built literally as its pieces (SVG 2 / docs/conventions.md): a rectangle per segment,
 // a join piece at each interior vertex (round: the circular sector between the outer corners;
 // miter: the quadrilateral to the miter tip, or the bevel triangle past the limit; bevel: the
 // triangle), caps at the ends (square: half-square; round: half-disk). Arcs are polygons with

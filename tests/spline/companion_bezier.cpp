@@ -105,7 +105,7 @@ TEST_CASE("The hodograph is the derivative: d (P_{k+1} - P_k)") {
 }
 
 TEST_CASE("Seed 003 §2: P''(0) = 6(P0 - 2P1 + P2), zero when P1 is the midpoint of P0P2") {
-  const Points relaxed = points2({{0, 0}, {1, 1}, {2, 2}, {3, 0}});  // FIGURES.md s003-fig03
+  const Points relaxed = points2({{0, 0}, {1, 1}, {2, 2}, {3, 0}});  // docs/figures.md s003-fig03
   const Points bent = points2({{0, 0}, {1, 1}, {2.5, 1}, {3, 0}});
   const BezierSpline a{relaxed}, b{bent};
   std::vector<double> d2(2);

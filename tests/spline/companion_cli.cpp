@@ -1,4 +1,4 @@
-// `splinefig interp` per CONTRACT.md, and eval's --knot-spacing / --betas, run as a user would:
+// `splinefig interp` per docs/cli.md, and eval's --knot-spacing / --betas, run as a user would:
 // stdin in, CSV out, one-line errors with nothing on stdout.
 #include <catch2/catch.hpp>
 #include <splinefig/spline/curve.hpp>

@@ -1,5 +1,5 @@
 // Lagrange interpolation (seed 003 Figure 1): exact reproduction of polynomials, the data
-// points themselves, and the swing of the degree-10 interpolant of FIGURES.md's step data.
+// points themselves, and the swing of the degree-10 interpolant of docs/figures.md's step data.
 #include <catch2/catch.hpp>
 #include <splinefig/spline/lagrange.hpp>
 
@@ -25,7 +25,7 @@ TEST_CASE("Lagrange reproduces a cubic from any 5 samples and passes through its
 }
 
 TEST_CASE("Seed 003 Figure 1: the degree-10 interpolant of a step swings far out near the ends") {
-  // FIGURES.md s003-fig01: t = 0..10, y = 0,0,0,0,0,1,1,1,1,1,1. Exact values by rational
+  // docs/figures.md s003-fig01: t = 0..10, y = 0,0,0,0,0,1,1,1,1,1,1. Exact values by rational
   // arithmetic: P(1/2) = 362017/131072, P(19/2) = 415701/131072, P(3/2) = -75563/131072.
   std::vector<double> ts;
   Points S(1);

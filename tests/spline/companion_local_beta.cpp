@@ -13,7 +13,7 @@ using namespace splinefig;
 
 namespace {
 
-Points zigzag() {  // FIGURES.md's bias/tension polygon
+Points zigzag() {  // docs/figures.md's bias/tension polygon
   Points p(2);
   for (double x = 0; x <= 6; ++x) p.push_back(std::vector<double>{x, std::fmod(x, 2) == 1 ? 2.0 : 0.0});
   return p;
@@ -45,7 +45,7 @@ TEST_CASE("Equal per-knot values give the uniform Beta-spline B_{b1,b2}") {
 
 TEST_CASE("Varying bias and tension stay G2: unit tangent and curvature vector continuous") {
   const Points k = zigzag();
-  // FIGURES.md local-betas: bias 5 and 10 at the 3rd and 4th vertex; tension 25 and -5.
+  // docs/figures.md local-betas: bias 5 and 10 at the 3rd and 4th vertex; tension 25 and -5.
   std::vector<ShapeParameters> bias(k.size()), tension(k.size());
   bias[2].b1 = 5, bias[3].b1 = 10;
   tension[2].b2 = 25, tension[3].b2 = -5;

@@ -50,7 +50,7 @@ TEST_CASE("Seed 002: the first step is 1/8 [4 4 0 0, 1 6 1 0, 0 4 4 0, 0 1 6 1, 
   check_coefficients(r[1], {1, 6, 1, 0}, 8);
   check_coefficients(r[2], {0, 4, 4, 0}, 8);
   check_coefficients(r[3], {0, 1, 6, 1}, 8);
-  check_coefficients(r[4], {0, 0, 4, 4}, 8);  // ERRATA: the seed's vector entry misprints this row
+  check_coefficients(r[4], {0, 0, 4, 4}, 8);  // docs/errata.md: the seed's vector entry misprints this row
 }
 
 TEST_CASE("Seed 002: limit points P(0), P(1/2) (example 3) and P(3/4) (exercise 4.100)") {

@@ -3,7 +3,7 @@
 //
 // An axis maps its range [d0, d1] linearly onto pixels [p0, p1] after a transfer f:
 // f(v) = v (linear), log10 v (log), or 20 log10 |v| (db: the range is given in dB and the
-// data are magnitudes). For y, p0 is the bottom of the plot box and p1 its top (CONTRACT.md).
+// data are magnitudes). For y, p0 is the bottom of the plot box and p1 its top (docs/conventions.md).
 #include <splinefig/figures/spec.hpp>
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // Figures: a spec laid out and drawn. render_figure() turns a FigureSpec into an image
-// plus the facts that image-based tests and index.json need (CONTRACT.md): where each
+// plus the facts that image-based tests and index.json need (docs/figures.md): where each
 // axes' plot box is in pixels, its data ranges, and the colour of every labelled series.
 #include <splinefig/figures/axes.hpp>
 #include <splinefig/figures/spec.hpp>
@@ -23,7 +23,7 @@ struct AxesInfo {
   std::vector<SeriesInfo> series;
   std::vector<double> x_ticks, y_ticks;
 
-  AxisMap x_map() const;  // data -> output pixels, as CONTRACT.md states
+  AxisMap x_map() const;  // data -> output pixels, as docs/conventions.md states
   AxisMap y_map() const;
 };
 
@@ -40,7 +40,7 @@ struct RenderOptions {
 };
 
 struct RenderedFigure {
-  render::Image image;
+  Image image;
   FigureInfo info;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Colours of the house style (FIGURES.md) and the palettes that colour families of curves.
+// Colours of the house style (docs/figures.md) and the palettes that colour families of curves.
 #include <splinefig/renderer/renderer.hpp>
 
 #include <string>

@@ -2,10 +2,11 @@
 // splinefig's renderer: exact-area antialiased drawing into linear-light float images.
 // No spline knowledge here. Geometry (paths, strokes, dashes) -> coverage -> pixels.
 //
-// Conventions (CONTRACT.md): (0,0) is the top-left corner of the top-left pixel, y down,
-// pixel (i,j) has centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha
-// at the API; the image holds premultiplied linear RGBA float32, composited with
-// Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
+// Conventions (docs/conventions.md): (0,0) is the top-left corner of the top-left pixel, y down, pixel (i,j) has
+// centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha at the API; the
+// image (splinefig::Image, image/image.hpp) holds premultiplied linear RGBA float32,
+// composited with Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
+#include <splinefig/image/image.hpp>
 #include <splinefig/kernel/kernel.hpp>
 
 #include <cstdint>
@@ -27,8 +28,6 @@ struct Color {  // linear light, straight alpha
 };
 // "#rrggbb" or "#rrggbbaa" (sRGB) -> linear; nullopt if it is not such a string.
 std::optional<Color> parse_hex_color(std::string_view hex);
-float srgb_to_linear(float v);
-float linear_to_srgb(float v);
 
 enum class Join { Miter, Round, Bevel };
 enum class Cap { Butt, Round, Square };
@@ -69,14 +68,6 @@ struct TextExtent {
 };
 TextExtent measure_text(std::string_view text, const TextStyle& style);
 
-// Premultiplied linear RGBA float32, row-major, 4 floats per pixel.
-struct Image {
-  int width = 0, height = 0;
-  std::vector<float> rgba;
-  float* pixel(int x, int y) { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
-  const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
-};
-
 // A drawing: a display list, rasterized at once (by tiles or bands, on any number of
 // threads, with byte-identical results). Items are composited in the order added.
 class Scene {
@@ -108,16 +99,8 @@ class Scene {
   friend Image rasterize(const Scene&, int threads);
 };
 
+// The picture as a linear-light RGBA image (associated alpha, channels R, G, B, A).
 // threads <= 0: all hardware threads.
 Image rasterize(const Scene& scene, int threads = 0);
-
-struct WriteOptions {
-  std::string software;     // "splinefig 0.1.0" by default
-  std::string description;  // e.g. the spec name
-};
-// Writes PNG (8-bit sRGB with alpha, straight alpha) or EXR (float32 linear RGBA), chosen by
-// the extension, to a temporary file in the same directory that is then renamed.
-// Throws std::runtime_error naming the path on failure; never leaves a partial file.
-void write_image(const Image& image, const std::string& path, const WriteOptions& options = {});
 
 }  // namespace splinefig::render

@@ -22,7 +22,7 @@
 // sweeps of Gaussian elimination, whose pivots converge to the steady recursions above (the
 // first few differ: that is the exact boundary handling). wrap gives a circulant system, solved by
 // the two recursions started from their exact periodic sums.
-#include <splinefig/resample/image.hpp>
+#include <splinefig/image/image.hpp>
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/kernel/kernel.hpp>
 

@@ -15,7 +15,7 @@
 // the image is filtered horizontally into a small ring of rows and then vertically, in parallel
 // over bands of output rows. Every output value is computed by the same operations whatever the
 // thread count, so the result is bit-identical for any number of threads.
-#include <splinefig/resample/image.hpp>
+#include <splinefig/image/image.hpp>
 #include <splinefig/kernel/kernel.hpp>
 
 #include <optional>

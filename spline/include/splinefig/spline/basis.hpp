@@ -53,7 +53,7 @@ Basis parse_basis(std::string_view spec);
 // The basis names parse_basis knows, comma-separated.
 std::string known_bases();
 
-// The basis function k(s) (CONTRACT.md kernel convention): a curve is
+// The basis function k(s) (docs/conventions.md kernel convention): a curve is
 // X(t) = sum_j x[j] k(t - j). For a cubic with columns c_0..c_3 of U M:
 // k(s) = c_3(s+2) on [-2,-1), c_2(s+1) on [-1,0), c_1(s) on [0,1), c_0(s-1) on [1,2].
 // For degree n, the piece between knots i and i+1 uses x[i-h] .. x[i-h+n] with
