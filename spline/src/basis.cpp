@@ -1,5 +1,6 @@
 // The memo's basis matrices, its spec syntax, and the basis functions.
 #include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <array>
 #include <charconv>
@@ -215,17 +216,6 @@ Support kernel_support(const Basis& b) {
   return {static_cast<double>(h - b.degree), static_cast<double>(h + 1)};
 }
 
-double kernel(const Basis& b, double s) {
-  const int n = b.degree;
-  const int h = (n - 1) / 2;
-  // Every family here is continuous at the ends of its support, so k = 0 there exactly
-  // (Horner at u = 1 would leave a rounding residue of the column sum).
-  if (!(s > h - n && s < h + 1)) return 0.0;
-  // Column c covers [h-c, h-c+1); the right end h+1 belongs to column 0.
-  int c = h - static_cast<int>(std::floor(s));
-  if (c < 0) c = 0;
-  if (c > n) c = n;
-  return basis_segment(b, c, s - (h - c));
-}
+double kernel(const Basis& b, double s) { return basis_kernel(b)(s); }
 
 }  // namespace splinefig
