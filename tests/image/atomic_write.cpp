@@ -201,6 +201,28 @@ TEST_CASE("atomic write: an inherited SIG_IGN stays ignored") {
   CHECK(names_in(dir) == std::vector<std::string>{"a.png", "b.png"});
 }
 
+TEST_CASE("atomic write: temporaries left by killed processes are removed, those of live ones kept") {
+  const auto dir = scratch_dir("stale");
+  const pid_t dead = ::fork();
+  REQUIRE(dead >= 0);
+  if (dead == 0) ::_exit(0);
+  REQUIRE(::waitpid(dead, nullptr, 0) == dead);  // a pid that no longer exists
+  const std::string stale = temporary_name("fig.png", long(dead), 3);
+  const std::string live = temporary_name("fig.png", long(::getppid()), 4);
+  const std::string other = temporary_name("other.png", long(dead), 5);
+  for (const auto& n : {stale, live, other}) std::ofstream(dir / n) << "partial";
+  const int status = in_child([&] {
+    write_image((dir / "fig.png").string(), noise(4, 4, 9));
+    return 0;
+  });
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK_FALSE(fs::exists(dir / stale));
+  CHECK(fs::exists(dir / live));
+  CHECK(fs::exists(dir / other));  // another target's: left to that target's next write
+  CHECK(fs::exists(dir / "fig.png"));
+}
+
 TEST_CASE("atomic write: a failed write names the path, in one line, and leaves nothing") {
   const auto dir = scratch_dir("failures");
   const Image im = noise(4, 4, 8);
