@@ -1,5 +1,6 @@
 // Built-in spec lookup, index.json and the gallery page.
 #include <splinefig/figures/catalog.hpp>
+#include <splinefig/image/atomic_file.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -11,7 +12,6 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -421,26 +421,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures) {
 }
 
 void write_text_file(const std::string& path, const std::string& text) {
-  fs::path target(path);
-  fs::path tmp = target;
-  tmp += ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-    out << text;
-    out.flush();
-    if (!out) {
-      out.close();
-      fs::remove(tmp);
-      throw std::runtime_error("cannot write " + tmp.string());
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp);
-    throw std::runtime_error("cannot write " + path + ": " + ec.message());
-  }
+  write_file_atomically(path, std::span(reinterpret_cast<const unsigned char*>(text.data()), text.size()));
 }
 
 }  // namespace splinefig::figures

@@ -121,49 +121,6 @@ Image load(const Raster& r) {
   return px;
 }
 
-// Composites the raster over the target rectangle [x0,x1) x [y0,y1) (output pixels):
-// each covered output pixel samples the source at its centre, nearest or bilinear.
-void composite(Image& dst, const Image& src, const Raster& r, double x0, double y0, double x1, double y1) {
-  int ix0 = std::max(0, static_cast<int>(std::floor(std::min(x0, x1))));
-  int ix1 = std::min(dst.width, static_cast<int>(std::ceil(std::max(x0, x1))));
-  int iy0 = std::max(0, static_cast<int>(std::floor(std::min(y0, y1))));
-  int iy1 = std::min(dst.height, static_cast<int>(std::ceil(std::max(y0, y1))));
-  auto fetch = [&](int x, int y, int k) {
-    x = std::clamp(x, 0, src.width - 1);
-    y = std::clamp(y, 0, src.height - 1);
-    return src.at(x, y, k);
-  };
-  for (int y = iy0; y < iy1; ++y) {
-    for (int x = ix0; x < ix1; ++x) {
-      double cx = x + 0.5, cy = y + 0.5;
-      // Pixels of the target whose centre lies inside the rectangle.
-      if (cx < std::min(x0, x1) || cx >= std::max(x0, x1) || cy < std::min(y0, y1) || cy >= std::max(y0, y1)) continue;
-      double sx = (cx - x0) / (x1 - x0) * src.width, sy = (cy - y0) / (y1 - y0) * src.height;
-      float s[4];
-      if (r.nearest) {
-        int px = static_cast<int>(std::floor(sx)), py = static_cast<int>(std::floor(sy));
-        for (int k = 0; k < 4; ++k) s[k] = fetch(px, py, k);
-      } else {
-        double fx = sx - 0.5, fy = sy - 0.5;
-        int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
-        float tx = static_cast<float>(fx - px), ty = static_cast<float>(fy - py);
-        for (int k = 0; k < 4; ++k)
-          s[k] = (1 - ty) * ((1 - tx) * fetch(px, py, k) + tx * fetch(px + 1, py, k)) +
-                 ty * ((1 - tx) * fetch(px, py + 1, k) + tx * fetch(px + 1, py + 1, k));
-      }
-      float* d = dst.pixel(x, y);
-      for (int k = 0; k < 4; ++k) d[k] = s[k] + d[k] * (1 - s[3]);
-    }
-  }
-}
-
-void over(Image& dst, const Image& src) {
-  for (size_t i = 0; i < dst.pixels.size(); i += 4) {
-    float a = src.pixels[i + 3];
-    for (int k = 0; k < 4; ++k) dst.pixels[i + k] = src.pixels[i + k] + dst.pixels[i + k] * (1 - a);
-  }
-}
-
 std::vector<Vec2> scaled(const std::vector<Vec2>& pts, double s) {
   std::vector<Vec2> out(pts.size());
   for (size_t i = 0; i < pts.size(); ++i) out[i] = {pts[i].x * s, pts[i].y * s};
@@ -197,50 +154,36 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
 }  // namespace
 
 Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,
-                    int threads) {
+            int threads) {
   const double s = p.scale();
-  Image result;
-  bool first = true;
-  auto layer_start = p.ops().begin();
-  auto flush = [&](auto end) {
-    render::Scene scene(width, height, first ? background : Color{0, 0, 0, 0}, filter);
-    for (auto it = layer_start; it != end; ++it) {
-      std::visit(
-          [&](const auto& op) {
-            using T = std::decay_t<decltype(op)>;
-            if constexpr (std::is_same_v<T, StrokeOp>) {
-              auto pts = scaled(op.points, s);
-              scene.stroke_polyline(pts, op.closed, scaled(op.style, s), op.color);
-            } else if constexpr (std::is_same_v<T, FillOp>) {
-              std::vector<std::vector<Vec2>> c;
-              for (const auto& contour : op.contours) c.push_back(scaled(contour, s));
-              scene.fill_polygon(c, op.rule, op.color);
-            } else if constexpr (std::is_same_v<T, CircleOp>) {
-              Vec2 ctr{op.centre.x * s, op.centre.y * s};
-              if (op.fill) scene.fill_circle(ctr, op.radius * s, *op.fill);
-              if (op.stroke) scene.stroke_circle(ctr, op.radius * s, scaled(op.stroke->style, s), op.stroke->color);
-            } else if constexpr (std::is_same_v<T, MarkerOp>) {
-              scene.marker(op.shape, {op.centre.x * s, op.centre.y * s}, op.size * s, op.color);
-            } else if constexpr (std::is_same_v<T, TextOp>) {
-              draw_text(scene, op, s);
-            }
-          },
-          *it);
-    }
-    Image img = render::rasterize(scene, threads);
-    if (first) result = std::move(img);
-    else over(result, img);
-    first = false;
-  };
-  for (auto it = p.ops().begin(); it != p.ops().end(); ++it) {
-    if (const auto* im = std::get_if<ImageOp>(&*it)) {
-      flush(it);
-      composite(result, load(im->raster), im->raster, im->x0 * s, im->y0 * s, im->x1 * s, im->y1 * s);
-      layer_start = it + 1;
-    }
+  render::Scene scene(width, height, background, filter);
+  for (const Op& op : p.ops()) {
+    std::visit(
+        [&](const auto& o) {
+          using T = std::decay_t<decltype(o)>;
+          if constexpr (std::is_same_v<T, StrokeOp>) {
+            auto pts = scaled(o.points, s);
+            scene.stroke_polyline(pts, o.closed, scaled(o.style, s), o.color);
+          } else if constexpr (std::is_same_v<T, FillOp>) {
+            std::vector<std::vector<Vec2>> c;
+            for (const auto& contour : o.contours) c.push_back(scaled(contour, s));
+            scene.fill_polygon(c, o.rule, o.color);
+          } else if constexpr (std::is_same_v<T, CircleOp>) {
+            Vec2 ctr{o.centre.x * s, o.centre.y * s};
+            if (o.fill) scene.fill_circle(ctr, o.radius * s, *o.fill);
+            if (o.stroke) scene.stroke_circle(ctr, o.radius * s, scaled(o.stroke->style, s), o.stroke->color);
+          } else if constexpr (std::is_same_v<T, MarkerOp>) {
+            scene.marker(o.shape, {o.centre.x * s, o.centre.y * s}, o.size * s, o.color);
+          } else if constexpr (std::is_same_v<T, TextOp>) {
+            draw_text(scene, o, s);
+          } else if constexpr (std::is_same_v<T, ImageOp>) {
+            scene.image(std::make_shared<const Image>(load(o.raster)), {o.x0 * s, o.y0 * s}, {o.x1 * s, o.y1 * s},
+                        o.raster.nearest ? render::Scene::Sampling::Nearest : render::Scene::Sampling::Bilinear);
+          }
+        },
+        op);
   }
-  if (first || layer_start != p.ops().end()) flush(p.ops().end());
-  return result;
+  return render::rasterize(scene, threads);
 }
 
 }  // namespace splinefig::figures::detail

@@ -1,7 +1,6 @@
 #pragma once
 // Internal: a display list in layout units (1x pixels) that is scaled to the output size
-// when it becomes renderer scenes. Raster images split the list into layers: the renderer
-// draws vector items, images are composited between layers (premultiplied, over).
+// when it becomes one renderer scene; raster images are scene items like the rest.
 #include <splinefig/figures/spec.hpp>
 
 #include <map>

@@ -4,10 +4,12 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <mutex>
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -97,6 +99,34 @@ struct Fd {
   }
 };
 
+// Removes temporary files of `filename` left by processes that no longer exist (killed with
+// SIGKILL, or a power cut). Files of live processes, and names this process did not make, stay.
+void remove_stale_temporaries(int dirfd, const std::string& filename) {
+  const std::string head = "." + filename.substr(0, 200) + ".splinefig-";
+  const int fd = ::dup(dirfd);
+  if (fd < 0) return;
+  DIR* d = ::fdopendir(fd);
+  if (!d) {
+    ::close(fd);
+    return;
+  }
+  ::rewinddir(d);
+  const long self = long(::getpid());
+  while (const dirent* e = ::readdir(d)) {
+    const std::string name = e->d_name;
+    if (name.size() <= head.size() + 4 || name.compare(0, head.size(), head) != 0 ||
+        name.compare(name.size() - 4, 4, ".tmp") != 0)
+      continue;
+    const std::string rest = name.substr(head.size(), name.size() - head.size() - 4);  // "<pid>-<n>"
+    const std::size_t dash = rest.find('-');
+    if (dash == 0 || dash == std::string::npos || rest.find_first_not_of("0123456789-") != std::string::npos) continue;
+    const long pid = std::strtol(rest.substr(0, dash).c_str(), nullptr, 10);
+    if (pid <= 0 || pid == self) continue;
+    if (::kill(pid_t(pid), 0) == -1 && errno == ESRCH) ::unlinkat(dirfd, name.c_str(), 0);
+  }
+  ::closedir(d);
+}
+
 }  // namespace
 
 std::string temporary_name(const std::string& filename, long pid, unsigned long n) {
@@ -158,6 +188,7 @@ void write_file_atomically(const std::string& path, std::span<const unsigned cha
     ::unlinkat(d.fd, tmp.c_str(), 0);
     throw UnwritableFile(path + ": cannot move the finished file into place (" + reason(err) + ")");
   }
+  remove_stale_temporaries(d.fd, filename);
   // The rename itself reaches the disk with the directory; some file systems cannot sync one.
   if (::fsync(d.fd) != 0 && errno != EINVAL && errno != EROFS)
     throw UnwritableFile(path + ": written, but its directory could not be synced (" + reason(errno) + ")");

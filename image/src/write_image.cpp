@@ -39,7 +39,8 @@ std::vector<T> integer_values(const Image& im) {
   const detail::Srgb8Encoder& enc = detail::srgb8_encoder();
   auto quantize = [&](float v) {
     if (!(v > 0.0f)) return T(0);
-    return static_cast<T>(std::lround(std::min(v, 1.0f) * top));
+    if (v >= 1.0f) return T(top);  // also the common opaque alpha, without a rounding call
+    return static_cast<T>(std::lround(v * top));
   };
   for (std::size_t p = 0; p < im.pixels.size(); p += std::size_t(C)) {
     const float* px = im.pixels.data() + p;

@@ -66,6 +66,14 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
   out.color[1] = it.color.g * a;
   out.color[2] = it.color.b * a;
   out.color[3] = a;
+  if (it.kind == K::Image) {
+    // The rows the rectangle touches (composite_raster picks the pixel centres inside).
+    out.raster = it.raster.get();
+    const double y0 = std::min(it.raster->p0.y, it.raster->p1.y), y1 = std::max(it.raster->p0.y, it.raster->p1.y);
+    out.row0 = static_cast<int>(std::clamp(std::floor(y0), 0.0, static_cast<double>(canvas_h)));
+    out.row1 = static_cast<int>(std::clamp(std::ceil(y1), 0.0, static_cast<double>(canvas_h)));
+    return;
+  }
   if (it.kind == K::Text) {
     out.is_text = true;
     out.mask = text_mask(it.text->text, it.centre, it.text->style, canvas_w, canvas_h);
@@ -112,7 +120,7 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
       if (it.radius > 0) marker_contour(it.marker, sh(it.centre), it.radius, b);
       s.simple = true;
       break;
-    case K::Text: break;
+    case K::Text: case K::Image: break;
   }
   s.chain_end = g.chains.size();
   auto first = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_begin);

@@ -11,6 +11,7 @@ struct Prepared {
   Shape shape;         // empty for text
   TextMask mask;       // text only
   bool is_text = false;
+  const Scene::Item::Raster* raster = nullptr;  // images only
   float color[4]{};    // premultiplied linear RGBA
   int row0 = 0, row1 = 0;  // canvas rows the item can touch, [row0, row1)
 };

@@ -5,6 +5,7 @@
 #include "box_coverage.hpp"
 #include "filter_coverage.hpp"
 #include "huge_pages.hpp"
+#include "raster_item.hpp"
 #include "prepare.hpp"
 
 #include <algorithm>
@@ -89,7 +90,7 @@ Image rasterize(const Scene& scene, int threads) {
   const auto& items = scene.items();
   auto prepare = [&](std::size_t i, Prepared& p) {
     prepare_item(items[i], shift, clip, geom, p, W, H);
-    if (p.is_text || p.shape.empty()) return;
+    if (p.is_text || p.raster || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
       p.row1 = std::min(H, static_cast<int>(std::ceil(p.shape.ymax)));
@@ -117,7 +118,9 @@ Image rasterize(const Scene& scene, int threads) {
       p = Prepared{};
       prepare(i, p);
       if (p.row1 <= p.row0) continue;
-      if (p.is_text) {
+      if (p.raster) {
+        composite_raster(*p.raster, img, 0, H);
+      } else if (p.is_text) {
         composite_mask(p, img, 0, H);
       } else if (box) {
         render_box(geom, p, img, p.row0, p.row1, row, sweep);
@@ -153,7 +156,8 @@ Image rasterize(const Scene& scene, int threads) {
       const int r0 = b * kBandRows, r1 = std::min(H, r0 + kBandRows);
       for (std::uint32_t i : band_items[static_cast<std::size_t>(b)]) {
         const Prepared& p = prep[i];
-        if (p.is_text) composite_mask(p, img, r0, r1);
+        if (p.raster) composite_raster(*p.raster, img, r0, r1);
+        else if (p.is_text) composite_mask(p, img, r0, r1);
         else if (box) render_box(geom, p, img, r0, r1, row, sweep);
         else render_filtered(geom, p, grid, img, r0, r1, fs, sweep);
       }

@@ -160,6 +160,22 @@ void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
   add(*items_, std::move(it));
 }
 
+void Scene::image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling sampling) {
+  if (!image) bad("image: no image");
+  if (image->channels != 4 || image->width < 1 || image->height < 1 ||
+      image->pixels.size() != image->pixel_count() * 4)
+    bad("image: the image must be RGBA with pixels (" + std::to_string(image->width) + " x " +
+        std::to_string(image->height) + " x " + std::to_string(image->channels) + ")");
+  for (float v : image->pixels)
+    if (!std::isfinite(v)) bad("image: a pixel value is not finite");
+  const Vec2 corners[2] = {p0, p1};
+  check_points(corners, "image", "corner");
+  Item it;
+  it.kind = Item::Kind::Image;
+  it.raster = std::make_shared<const Item::Raster>(Item::Raster{std::move(image), p0, p1, sampling == Sampling::Nearest});
+  add(*items_, std::move(it));
+}
+
 void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
   check_points({&anchor, 1}, "text", "anchor");
   check_finite(style.size, "text", "font size");

@@ -9,7 +9,7 @@
 namespace splinefig::render {
 
 struct Scene::Item {
-  enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text } kind = Kind::Fill;
+  enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text, Image } kind = Kind::Fill;
   std::vector<std::vector<Vec2>> contours;  // Fill: the contours; Stroke: contours[0] the path
   bool closed = false;
   StrokeStyle stroke;
@@ -23,6 +23,12 @@ struct Scene::Item {
     TextStyle style;
   };
   std::unique_ptr<Text> text;  // Text only: keeps the common item small
+  struct Raster {
+    std::shared_ptr<const Image> image;  // 4 channels, associated alpha
+    Vec2 p0, p1;                         // the target rectangle's corners
+    bool nearest = true;
+  };
+  std::shared_ptr<const Raster> raster;  // Image only
 };
 
 }  // namespace splinefig::render

@@ -8,7 +8,10 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <array>
+#include <cstring>
 #include <filesystem>
+#include <memory>
 #include <fstream>
 
 namespace sr = splinefig::render;
@@ -203,4 +206,73 @@ TEST_CASE("text: measure_text grows with the string, render_text draws at the an
     if (h == sr::HAlign::Center) { CHECK(std::abs((x0 + x1) / 2 - 40) <= 2); CHECK(std::abs((y0 + y1) / 2 - 20) <= 2); }
     if (h == sr::HAlign::Right) { CHECK(std::abs(x1 - 39) <= 2); CHECK(std::abs(y0 - 20) <= 1); }
   }
+}
+
+namespace {
+
+std::shared_ptr<const splinefig::Image> two_by_two() {
+  auto im = std::make_shared<splinefig::Image>(2, 2, 4);
+  // Premultiplied: red, green at half alpha, blue, transparent.
+  const float v[16] = {1, 0, 0, 1, 0, 0.5f, 0, 0.5f, 0, 0, 1, 1, 0, 0, 0, 0};
+  std::copy(v, v + 16, im->pixels.begin());
+  return im;
+}
+
+}  // namespace
+
+TEST_CASE("image items: nearest sampling at pixel centres, composited over what is below") {
+  sr::Scene scene(20, 20, {1, 1, 1, 1});
+  scene.image(two_by_two(), {10, 10}, {14, 14}, sr::Scene::Sampling::Nearest);
+  const splinefig::Image img = sr::rasterize(scene, 1);
+  auto px = [&](int x, int y) { return std::array<float, 4>{img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2), img.at(x, y, 3)}; };
+  CHECK(px(10, 10) == std::array<float, 4>{1, 0, 0, 1});
+  CHECK(px(11, 11) == std::array<float, 4>{1, 0, 0, 1});
+  CHECK(px(12, 10) == std::array<float, 4>{0.5f, 1.0f, 0.5f, 1});  // green 0.5 + white * 0.5
+  CHECK(px(10, 13) == std::array<float, 4>{0, 0, 1, 1});
+  CHECK(px(13, 13) == std::array<float, 4>{1, 1, 1, 1});  // transparent: the background
+  CHECK(px(9, 10) == std::array<float, 4>{1, 1, 1, 1});   // outside the rectangle
+  CHECK(px(14, 12) == std::array<float, 4>{1, 1, 1, 1});
+}
+
+TEST_CASE("image items: bilinear sampling, a flipped rectangle, order with vector items") {
+  sr::Scene scene(8, 4, {0, 0, 0, 0});
+  auto ramp = std::make_shared<splinefig::Image>(2, 1, 4);
+  const float v[8] = {0, 0, 0, 1, 1, 1, 1, 1};
+  std::copy(v, v + 8, ramp->pixels.begin());
+  // x in [0, 8): source x = (cx / 8) * 2, sampled at sx - 0.5 between the two pixels.
+  scene.image(ramp, {0, 0}, {8, 2}, sr::Scene::Sampling::Bilinear);
+  scene.image(ramp, {8, 2}, {0, 4}, sr::Scene::Sampling::Nearest);  // mirrored in x
+  scene.fill_polygon({{{6, 0}, {8, 0}, {8, 1}, {6, 1}}}, sr::FillRule::NonZero, {0, 0, 1, 1});
+  const splinefig::Image img = sr::rasterize(scene, 1);
+  const float expected[8] = {0, 0, 0.125f, 0.375f, 0.625f, 0.875f, 1, 1};
+  for (int x = 0; x < 8; ++x) CHECK(img.at(x, 1, 0) == Approx(expected[x]).margin(1e-7));
+  CHECK(img.at(0, 3, 0) == 1.0f);  // mirrored: the white pixel on the left
+  CHECK(img.at(7, 3, 0) == 0.0f);
+  CHECK(img.at(7, 0, 0) == 0.0f);  // the later blue fill covers the image
+  CHECK(img.at(7, 0, 2) == 1.0f);
+}
+
+TEST_CASE("image items: identical bytes for any thread count and pixel filter, bad input rejected") {
+  auto build = [](splinefig::Kernel f) {
+    sr::Scene scene(300, 700, {1, 1, 1, 1}, f);
+    scene.fill_circle({150, 350}, 120, {0.2f, 0.4f, 0.6f, 0.7f});
+    scene.image(two_by_two(), {20.3, 15.7}, {280.9, 690.2}, sr::Scene::Sampling::Bilinear);
+    scene.fill_circle({150, 350}, 60, {0.8f, 0.1f, 0.1f, 0.5f});
+    return scene;
+  };
+  for (const auto& f : {splinefig::Kernel::box(), splinefig::Kernel::tent()}) {
+    const sr::Scene scene = build(f);
+    const splinefig::Image one = sr::rasterize(scene, 1);
+    for (int threads : {2, 3, 8}) {
+      const splinefig::Image many = sr::rasterize(scene, threads);
+      REQUIRE(many.pixels.size() == one.pixels.size());
+      CHECK(std::memcmp(many.pixels.data(), one.pixels.data(), one.pixels.size() * sizeof(float)) == 0);
+    }
+  }
+  sr::Scene scene(4, 4);
+  CHECK_THROWS_WITH(scene.image(nullptr, {0, 0}, {1, 1}, sr::Scene::Sampling::Nearest), Catch::Contains("image"));
+  CHECK_THROWS_AS(scene.image(std::make_shared<splinefig::Image>(1, 1, 3), {0, 0}, {1, 1}, sr::Scene::Sampling::Nearest),
+                  std::invalid_argument);
+  CHECK_THROWS_WITH(scene.image(two_by_two(), {0, std::nan("")}, {1, 1}, sr::Scene::Sampling::Nearest),
+                    Catch::Contains("image: corner point 0 is not finite"));
 }

@@ -37,7 +37,8 @@ std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, con
 // it marks each <img> with data-loaded="yes" or "no", and <body> with data-images-ok.
 std::string gallery_html(const std::vector<FigureInfo>& figures);
 
-// Writes `text` to `path` through a temporary file in the same directory and a rename.
+// Writes `text` to `path` atomically (write_file_atomically, image/atomic_file.hpp); throws
+// std::runtime_error naming the path on failure.
 void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace splinefig::figures

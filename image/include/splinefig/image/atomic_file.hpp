@@ -7,7 +7,8 @@
 //
 // Temporary names are ".<start of the target's name>.splinefig-<pid>-<n>.tmp": unique per
 // call (process id, a per-process counter, O_EXCL), at most 255 bytes for any valid target
-// name. Thread-safe. While a write is under way, SIGINT, SIGTERM and SIGHUP remove the
+// name. After a successful write, temporary files of the same target left by processes that no
+// longer exist (killed with SIGKILL) are removed. Thread-safe. While a write is under way, SIGINT, SIGTERM and SIGHUP remove the
 // temporary files of every writer thread and then take their previous action (the handler is
 // installed at the first write, and not at all for a signal whose action is SIG_IGN, so an
 // ignored signal stays ignored).

@@ -80,6 +80,12 @@ class Scene {
   void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color);
   void marker(Marker shape, Vec2 centre, double size, Color fill);
   void text(std::string_view text, Vec2 anchor, const TextStyle& style);
+  // A raster image (linear RGBA, associated alpha: the form rasterize returns) drawn into the
+  // rectangle with corners p0 and p1: each canvas pixel whose centre lies inside samples the
+  // image at that centre, nearest or bilinear (edge pixels repeated), and is composited over
+  // what is below. Not shaped by the pixel filter: the image's own pixels are the samples.
+  enum class Sampling { Nearest, Bilinear };
+  void image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling sampling);
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -1,0 +1,46 @@
+// Raster image items (see raster_item.hpp).
+#include "raster_item.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace splinefig::render::detail {
+
+void composite_raster(const Scene::Item::Raster& r, Image& img, int r0, int r1) {
+  const Image& src = *r.image;
+  const double x0 = r.p0.x, y0 = r.p0.y, x1 = r.p1.x, y1 = r.p1.y;
+  const double xlo = std::min(x0, x1), xhi = std::max(x0, x1), ylo = std::min(y0, y1), yhi = std::max(y0, y1);
+  const int ix0 = std::max(0, static_cast<int>(std::floor(xlo)));
+  const int ix1 = std::min(img.width, static_cast<int>(std::ceil(xhi)));
+  const int iy0 = std::max(r0, static_cast<int>(std::floor(ylo)));
+  const int iy1 = std::min(r1, static_cast<int>(std::ceil(yhi)));
+  auto fetch = [&](int x, int y, int k) {
+    x = std::clamp(x, 0, src.width - 1);
+    y = std::clamp(y, 0, src.height - 1);
+    return src.at(x, y, k);
+  };
+  for (int y = iy0; y < iy1; ++y) {
+    for (int x = ix0; x < ix1; ++x) {
+      const double cx = x + 0.5, cy = y + 0.5;
+      // Pixels of the canvas whose centre lies inside the rectangle.
+      if (cx < xlo || cx >= xhi || cy < ylo || cy >= yhi) continue;
+      const double sx = (cx - x0) / (x1 - x0) * src.width, sy = (cy - y0) / (y1 - y0) * src.height;
+      float s[4];
+      if (r.nearest) {
+        const int px = static_cast<int>(std::floor(sx)), py = static_cast<int>(std::floor(sy));
+        for (int k = 0; k < 4; ++k) s[k] = fetch(px, py, k);
+      } else {
+        const double fx = sx - 0.5, fy = sy - 0.5;
+        const int px = static_cast<int>(std::floor(fx)), py = static_cast<int>(std::floor(fy));
+        const float tx = static_cast<float>(fx - px), ty = static_cast<float>(fy - py);
+        for (int k = 0; k < 4; ++k)
+          s[k] = (1 - ty) * ((1 - tx) * fetch(px, py, k) + tx * fetch(px + 1, py, k)) +
+                 ty * ((1 - tx) * fetch(px, py + 1, k) + tx * fetch(px + 1, py + 1, k));
+      }
+      float* d = img.pixel(x, y);
+      for (int k = 0; k < 4; ++k) d[k] = s[k] + d[k] * (1 - s[3]);
+    }
+  }
+}
+
+}  // namespace splinefig::render::detail
