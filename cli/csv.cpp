@@ -156,6 +156,12 @@ std::string format_points(const Points& p) {
   return s;
 }
 
+std::size_t first_non_finite(std::span<const double> v) {
+  std::size_t i = 0;
+  while (i < v.size() && std::isfinite(v[i])) ++i;
+  return i;
+}
+
 void write_stdout(std::string_view text) {
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
     throw Failure("cannot write to stdout", 1);

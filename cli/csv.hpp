@@ -40,6 +40,11 @@ std::string format_number(double v);
 void append_point(std::string& out, std::span<const double> p);
 std::string format_points(const Points& p);
 
+// The index of the first value that is not finite (NaN, +-inf), or v.size() if all are.
+// Every command checks its numbers with it before writing: a non-finite result is an error
+// naming the input that caused it, never printed.
+std::size_t first_non_finite(std::span<const double> v);
+
 // Writes text to stdout and flushes; throws Failure if the write fails (disk full, closed pipe).
 void write_stdout(std::string_view text);
 
