@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -29,7 +30,8 @@ std::optional<KnotSpacing> parse_knot_spacing(std::string_view name) {
 
 namespace {
 
-// |knot j - knot j-1| without overflow of the squares (infinite only beyond the range of a double).
+// |knot j - knot j-1| without overflow or underflow of the squares (infinite only beyond the
+// range of a double).
 double distance(const Points& knots, std::size_t j) {
   const std::size_t dim = static_cast<std::size_t>(knots.dim);
   double scale = 0;
@@ -56,8 +58,10 @@ std::vector<double> knot_parameters(const Points& knots, double alpha) {
       d2 += d * d;
     }
     // |d|^alpha = (|d|^2)^(alpha/2); pow(0, 0) = 1 keeps uniform spacing for coincident knots.
-    // Where |d|^2 overflows (|d| beyond about 1e154) |d| is taken in scaled form instead.
-    tau[j] = tau[j - 1] + (std::isfinite(d2) ? std::pow(d2, alpha / 2) : std::pow(distance(knots, j), alpha));
+    // Where |d|^2 overflows or underflows (|d| beyond about 1e154 or below 1e-154) |d| is
+    // taken in scaled form instead (which also gives 0 for coincident knots).
+    const bool in_range = std::isfinite(d2) && d2 >= std::numeric_limits<double>::min();
+    tau[j] = tau[j - 1] + (in_range ? std::pow(d2, alpha / 2) : std::pow(distance(knots, j), alpha));
   }
   return tau;
 }

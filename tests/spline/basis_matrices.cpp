@@ -17,6 +17,16 @@ void check_matrix(const Basis& b, const double (&expect)[4][4], double tol = 0) 
         CHECK(b(r, c) == Approx(expect[r][c]).margin(tol));
     }
 }
+
+// The SpecError message for a spec, or "no error".
+std::string msg(const char* spec) {
+  try {
+    parse_basis(spec);
+  } catch (const SpecError& e) {
+    return e.what();
+  }
+  return "no error";
+}
 }  // namespace
 
 TEST_CASE("Catmull-Rom matrix is the memo's C = 1/2 [...]") {
@@ -76,14 +86,6 @@ TEST_CASE("Kernel values: Catmull-Rom k(0)=1 and min -2/27 at 4/3, B-spline 2/3 
 }
 
 TEST_CASE("Invalid basis specs name what is wrong") {
-  auto msg = [](const char* s) {
-    try {
-      parse_basis(s);
-    } catch (const SpecError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   CHECK_THAT(msg("bezier"), Catch::Contains("unknown basis 'bezier'"));
   CHECK_THAT(msg("cardinal:b=1"), Catch::Contains("unknown parameter 'b'"));
   CHECK_THAT(msg("cardinal:a=nan"), Catch::Contains("not finite"));
@@ -96,14 +98,6 @@ TEST_CASE("Invalid basis specs name what is wrong") {
 }
 
 TEST_CASE("Spec parameters: negative tangents and overflow are refused, the polygon limits accepted") {
-  auto msg = [](const char* s) {
-    try {
-      parse_basis(s);
-    } catch (const SpecError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   // Out of the range of a double is not "not a number".
   CHECK(msg("cardinal:a=1e400") == "cardinal: value of 'a' is out of the range of a double: '1e400'");
   CHECK_THAT(msg("uniform-bspline:degree=-1e999"), Catch::Contains("out of the range of a double"));

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -173,21 +174,26 @@ TEST_CASE("eval --knot-spacing and --betas errors name the flag or the file") {
 
 TEST_CASE("eval --knot-spacing on knots whose squared distances overflow: the curve scales with its knots") {
   // Spaced Catmull-Rom is invariant under scaling (its parameters scale with the knots), and
-  // 2^600 scales exactly: |d|^2 ~ 2^1200 overflows, |d| does not.
+  // powers of 2 scale exactly: at 2^600 |d|^2 overflows, at 2^-600 it underflows; |d| does not.
   const std::string small = "0,0\n1,2\n3,3\n4,1\n6,0\n";
-  std::string large;
-  for (const auto& row : rows(small))
-    large += std::to_string(std::ldexp(row[0], 600)) + "," + std::to_string(std::ldexp(row[1], 600)) + "\n";
-  for (const char* spacing : {"chordal", "centripetal"}) {
-    INFO(spacing);
-    const Run a = run(std::string("eval --basis catmull-rom --grain 4 --knot-spacing ") + spacing, small);
-    const Run b = run(std::string("eval --basis catmull-rom --grain 4 --knot-spacing ") + spacing, large);
-    REQUIRE(a.code == 0);
-    REQUIRE(b.code == 0);
-    const auto ra = rows(a.out), rb = rows(b.out);
-    REQUIRE(ra.size() == rb.size());
-    for (std::size_t i = 0; i < ra.size(); ++i)
-      for (std::size_t c = 0; c < 2; ++c) CHECK(std::ldexp(rb[i][c], -600) == Approx(ra[i][c]).margin(1e-12));
+  for (const int e : {600, -600}) {
+    std::string scaled;
+    for (const auto& row : rows(small)) {
+      char line[128];
+      std::snprintf(line, sizeof line, "%.17g,%.17g\n", std::ldexp(row[0], e), std::ldexp(row[1], e));
+      scaled += line;
+    }
+    for (const char* spacing : {"chordal", "centripetal"}) {
+      INFO(spacing << " at 2^" << e);
+      const Run a = run(std::string("eval --basis catmull-rom --grain 4 --knot-spacing ") + spacing, small);
+      const Run b = run(std::string("eval --basis catmull-rom --grain 4 --knot-spacing ") + spacing, scaled);
+      REQUIRE(a.code == 0);
+      REQUIRE(b.code == 0);
+      const auto ra = rows(a.out), rb = rows(b.out);
+      REQUIRE(ra.size() == rb.size());
+      for (std::size_t i = 0; i < ra.size(); ++i)
+        for (std::size_t c = 0; c < 2; ++c) CHECK(std::ldexp(rb[i][c], -e) == Approx(ra[i][c]).margin(1e-12));
+    }
   }
   // Knots 2e308 apart: the distance itself is beyond a double.
   expect_error("eval --basis catmull-rom --knot-spacing chordal", "0,0\n1e308,1\n-1e308,0\n3,1\n5,5\n",
