@@ -95,10 +95,10 @@ void check_measurable(const Curve& c, const std::string& spacing) {
   }
 }
 
-// No non-finite number is printed: the first one names the knots of its piece (and the basis).
-void check_finite(const Points& out, const Curve& c, const Options& o, int derivative, int grain,
+// No non-finite number is printed: the first one (coords[k]) names the knots of its piece and
+// the basis.
+void check_finite(const Points& out, std::size_t k, const Curve& c, const Options& o, int derivative, int grain,
                   const std::vector<double>& ts) {
-  const std::size_t k = cli::first_non_finite(out.coords);
   if (k == out.coords.size()) return;
   const std::size_t row = k / static_cast<std::size_t>(out.dim);
   double t = 0;
@@ -169,8 +169,10 @@ int run(const Options& o) {
     out = companion ? sample_companion(o, c, grain, derivative) : sample(c, grain, derivative);
   }
   if (!ts.empty()) out = evaluate_at(c, ts, derivative);
-  check_finite(out, c, o, derivative, grain, ts);
-  cli::write_stdout(cli::format_points(out));
+  std::size_t non_finite = 0;
+  const std::string text = cli::format_points(out, non_finite);
+  check_finite(out, non_finite, c, o, derivative, grain, ts);
+  cli::write_stdout(text);
   return 0;
 }
 

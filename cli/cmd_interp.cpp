@@ -49,9 +49,8 @@ std::istringstream slurp_stdin() {
 // The spline is linear in its data, so a result that is not finite (from finite data) means
 // the 1-4-1 solve or the curve overflowed: name the data point (or end velocity) of largest
 // magnitude, the one that drives it out of range.
-void check_finite(std::span<const double> out, const Points& data, const std::vector<double>& v,
-                  const std::vector<double>& w) {
-  if (first_non_finite(out) == out.size()) return;
+void check_finite(bool finite, const Points& data, const std::vector<double>& v, const std::vector<double>& w) {
+  if (finite) return;
   std::size_t at = 0;
   double big = -1;
   for (std::size_t k = 0; k < data.coords.size(); ++k)
@@ -100,11 +99,11 @@ int run(const Options& o) {
 
   std::string out;
   if (o.output == "bspline") {
-    check_finite(s.control.coords, data, v, w);
+    check_finite(first_non_finite(s.control.coords) == s.control.coords.size(), data, v, w);
     out = format_points(s.control);
   } else if (o.output == "bezier") {
     const BezierSpline b = bezier_pieces(s);
-    check_finite(b.points.coords, data, v, w);
+    check_finite(first_non_finite(b.points.coords) == b.points.coords.size(), data, v, w);
     const std::size_t dim = static_cast<std::size_t>(b.points.dim);
     out.reserve(b.pieces() * 4 * dim * 24);
     for (std::size_t i = 0; i < b.pieces(); ++i) {
@@ -118,8 +117,9 @@ int run(const Options& o) {
                     " data points would write " + std::to_string(static_cast<long long>(rows)) +
                     " points (at most 100000000)");
     const Points curve = sample(s, grain);
-    check_finite(curve.coords, data, v, w);
-    out = format_points(curve);
+    std::size_t non_finite = 0;
+    out = format_points(curve, non_finite);
+    check_finite(non_finite == curve.coords.size(), data, v, w);
   }
   write_stdout(out);
   return 0;
