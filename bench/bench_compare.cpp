@@ -16,7 +16,7 @@
 
 namespace {
 
-using splinefig::compare::Image;
+using splinefig::Image;
 
 struct Pair {
   Image a, b;

@@ -9,6 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include <splinefig/resample/resample.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -54,7 +55,7 @@ Image& output(int size) {
 int all_threads() { return resolve_threads(0); }
 
 void splinefig_resample(benchmark::State& state, int size, const std::string& filter, int threads) {
-  const Filter f = parse_filter(filter);
+  const Kernel f = parse_kernel(filter);
   ResampleOptions opt;
   opt.threads = threads;
   const Image& src = source();
@@ -81,7 +82,7 @@ void oiio_resize(benchmark::State& state, int size, const std::string& filter, i
   // Accuracy: the largest difference from splinefig's result (clamped edges, symmetric kernel).
   Image ours(size, size, 3);
   ResampleOptions opt;
-  resample_into(s, ours, parse_filter(filter), opt);
+  resample_into(s, ours, parse_kernel(filter), opt);
   double diff = 0;
   for (size_t i = 0; i < ours.pixels.size(); ++i) diff = std::max(diff, double(std::abs(ours.pixels[i] - out.pixels[i])));
   state.counters["max_abs_diff"] = diff;

@@ -198,7 +198,7 @@ void BM_splinefig(benchmark::State& state, char id, int threads) {
   const Workload& w = workload(id);
   for (auto _ : state) {
     sr::Image img = draw_splinefig(w, threads);
-    benchmark::DoNotOptimize(img.rgba.data());
+    benchmark::DoNotOptimize(img.pixels.data());
   }
   state.counters["peak_rss_MB"] = peak_rss_mb();
 }
@@ -256,7 +256,7 @@ void BM_accuracy(benchmark::State& state, int impl) {
       std::vector<double> got(want.size());
       if (impl == 0) {
         sr::Image img = draw_splinefig(w, 1, 40, {0, 0, 0, 0}, {1, 1, 1, 1});
-        for (std::size_t i = 0; i < got.size(); ++i) got[i] = img.rgba[i * 4 + 3];
+        for (std::size_t i = 0; i < got.size(); ++i) got[i] = img.pixels[i * 4 + 3];
       } else if (impl == 1) {
         CairoCanvas c(40);
         draw_cairo(c, w, false, 1);

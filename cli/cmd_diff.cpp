@@ -5,7 +5,7 @@
 #include "command.hpp"
 
 #include <splinefig/compare/compare.hpp>
-#include <splinefig/compare/io.hpp>
+#include <splinefig/image/io.hpp>
 #include <splinefig/compare/visualize.hpp>
 
 #include <cmath>
@@ -41,20 +41,18 @@ void check_percent(const char* flag, double v) {
   if (!(v >= 0.0 && v <= 100.0)) throw cli::Failure(std::string(flag) + " must be a percentage in [0, 100]");
 }
 
-compare::Image load(const std::string& path, bool linear) {
+Image load(const std::string& path, bool linear) {
   try {
-    compare::LoadOptions lo;
-    lo.linear = linear;
-    return compare::load_image(path, lo);
-  } catch (const compare::UnreadableImage& e) {
+    return read_image(path, linear ? ReadMode::linear : ReadMode::as_stored);
+  } catch (const UnreadableImage& e) {
     throw cli::Failure(std::string("cannot read ") + e.what(), 4);
   }
 }
 
-void write(const std::string& path, const compare::Image& im) {
+void write(const std::string& path, const Image& im) {
   try {
-    compare::write_image(path, im);
-  } catch (const compare::UnwritableImage& e) {
+    write_image(path, im);
+  } catch (const UnwritableImage& e) {
     throw cli::Failure(std::string("cannot write ") + e.what(), 4);
   }
 }
@@ -88,10 +86,10 @@ int run(const DiffArgs& args) {
   o.flip_max = args.flip;
   o.perceptual = args.perceptual;
 
-  const compare::Image a = load(args.a, args.linear);
-  const compare::Image b = load(args.b, args.linear);
-  std::unique_ptr<compare::Image> mask;
-  if (!args.mask.empty()) mask = std::make_unique<compare::Image>(load(args.mask, false));
+  const Image a = load(args.a, args.linear);
+  const Image b = load(args.b, args.linear);
+  std::unique_ptr<Image> mask;
+  if (!args.mask.empty()) mask = std::make_unique<Image>(load(args.mask, false));
 
   compare::Comparison c;
   try {

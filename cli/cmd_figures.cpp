@@ -1,26 +1,29 @@
 // `splinefig figures [--out DIR] [--only NAME...] [--format png,exr] [--scale S]`: renders
 // every built-in figure spec (figures/specs), then index.json and the gallery index.html.
+// With --only, the index keeps the entries of the figures that were not rendered again.
 #include "command.hpp"
 
+#include <splinefig/figures/batch.hpp>
 #include <splinefig/figures/catalog.hpp>
-#include <splinefig/figures/figure.hpp>
 #include <splinefig/version.hpp>
 
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
-#include <mutex>
-#include <optional>
-#include <thread>
-#include <ctime>
-#include <time.h>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <set>
+#include <sstream>
 
 namespace {
+
+namespace fig = splinefig::figures;
+namespace fs = std::filesystem;
+using splinefig::cli::Failure;
 
 struct FiguresArgs {
   std::string out = "out/figures";
@@ -43,119 +46,101 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-int run(const FiguresArgs& a) {
-  using splinefig::cli::Failure;
-  namespace fig = splinefig::figures;
-  namespace fs = std::filesystem;
+// The flags checked and turned into batch options.
+fig::BatchOptions batch_options(const FiguresArgs& a) {
   if (!(a.scale > 0) || a.scale > 64) throw Failure("--scale " + std::to_string(a.scale) + ": must be in (0, 64]");
   if (a.threads < 0) throw Failure("--threads: must not be negative");
-  std::vector<std::string> formats;
+  fig::BatchOptions o;
+  o.out_dir = a.out;
+  o.scale = a.scale;
+  o.threads = a.threads;
+  o.software = std::string("splinefig ") + SPLINEFIG_VERSION;
+  o.formats.clear();
   for (const auto& f : split(a.format)) {
     if (f != "png" && f != "exr") throw Failure("--format " + a.format + ": \"" + f + "\" is not png or exr");
-    if (std::find(formats.begin(), formats.end(), f) == formats.end()) formats.push_back(f);
+    if (std::find(o.formats.begin(), o.formats.end(), f) == o.formats.end()) o.formats.push_back(f);
   }
+  return o;
+}
+
+// Every spec of the directory; `only` names some of them.
+std::vector<fig::SpecFile> all_specs(const FiguresArgs& a) {
   const std::string dir = a.specs.empty() ? fig::builtin_specs_dir() : a.specs;
   if (dir.empty() || !fs::is_directory(dir))
     throw Failure("cannot find the built-in figure specs (set SPLINEFIG_SPECS_DIR or use --specs DIR)");
   std::vector<fig::SpecFile> specs = fig::list_specs(dir);
-  if (!a.only.empty()) {
-    std::set<std::string> known;
-    for (const auto& s : specs) known.insert(s.name);
-    for (const auto& n : a.only)
-      if (!known.count(n)) {
-        std::string list;
-        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-        throw Failure("--only " + n + ": no such figure (known: " + list + ")");
-      }
-    std::erase_if(specs, [&](const fig::SpecFile& s) {
-      return std::find(a.only.begin(), a.only.end(), s.name) == a.only.end();
-    });
+  for (const auto& n : a.only)
+    if (std::none_of(specs.begin(), specs.end(), [&](const fig::SpecFile& s) { return s.name == n; })) {
+      std::string list;
+      for (const auto& s : specs) list += (list.empty() ? "" : ", ") + s.name;
+      throw Failure("--only " + n + ": no such figure (known: " + list + ")");
+    }
+  return specs;
+}
+
+std::vector<fig::SpecFile> selected(std::vector<fig::SpecFile> specs, const std::vector<std::string>& only) {
+  if (only.empty()) return specs;
+  std::erase_if(specs, [&](const fig::SpecFile& s) { return std::find(only.begin(), only.end(), s.name) == only.end(); });
+  return specs;
+}
+
+// The index.json already in the output directory (none: empty). An unreadable one is
+// replaced, with a warning.
+std::vector<fig::FigureInfo> previous_index(const std::string& out) {
+  const fs::path path = fs::path(out) / "index.json";
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return {};
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return fig::read_index_json(text.str());
+  } catch (const std::exception& e) {
+    std::cerr << "splinefig figures: " << path.string() << ": cannot read it (" << e.what()
+              << "); writing a new one with the figures rendered now\n";
+    return {};
   }
+}
+
+// "  name      12.3 ms (CPU 11 ms)"
+std::string progress_line(const fig::BatchResult& r) {
+  char buf[160];
+  std::string cpu = r.cpu_ms >= 0 ? " (CPU " + std::to_string(std::lround(r.cpu_ms)) + " ms)" : "";
+  std::snprintf(buf, sizeof buf, "  %-18s %7.1f ms%s", r.name.c_str(), r.wall_ms, cpu.c_str());
+  return buf;
+}
+
+int run(const FiguresArgs& a) {
+  const fig::BatchOptions options = batch_options(a);
+  const std::vector<fig::SpecFile> specs = all_specs(a);
+  const std::vector<fig::SpecFile> chosen = selected(specs, a.only);
   std::error_code ec;
   fs::create_directories(a.out, ec);
   if (!fs::is_directory(a.out)) throw Failure("--out " + a.out + ": cannot create the directory");
 
-  // Figures render in parallel, one per worker; a figure's own serial parts (text, PNG
-  // encoding) dominate, so this beats splitting each figure's rasterization across threads.
-  // With one figure (or --threads 1) the rasterizer gets all the threads instead. The images
-  // do not depend on the thread count; progress lines come out in spec order.
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
+  const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const size_t workers = std::min<size_t>(specs.size(), a.threads > 0 ? static_cast<unsigned>(a.threads) : hw);
-  const int raster_threads = workers > 1 ? 1 : a.threads;
-  struct Outcome {
-    bool finished = false;
-    std::optional<fig::FigureInfo> info;
-    std::string line;   // progress line or error message
-  };
-  std::vector<Outcome> outcomes(specs.size());
-  std::mutex mutex;
-  std::condition_variable ready;
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t i = next++; i < specs.size(); i = next++) {
-      const fig::SpecFile& s = specs[i];
-      const auto t0 = clock::now();
-      timespec c0{};
-      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c0);
-      Outcome o;
-      try {
-        fig::FigureSpec spec = fig::load_spec(s.path);
-        fig::check_scaled_canvas(spec, a.scale, "--scale");
-        fig::RenderedFigure r = fig::render_figure(spec, {a.scale, raster_threads});
-        splinefig::render::WriteOptions w;
-        w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
-        w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
-        for (const auto& f : formats) {
-          std::string file = s.name + "." + f;
-          splinefig::render::write_image(r.image, (fs::path(a.out) / file).string(), w);
-          r.info.files.push_back(file);
-        }
-        const double ms = std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-        timespec c1{};
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &c1);
-        const double cpu_ms = (c1.tv_sec - c0.tv_sec) * 1e3 + (c1.tv_nsec - c0.tv_nsec) * 1e-6;
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "  %-18s %7.1f ms%s", s.name.c_str(), ms,
-                      raster_threads == 1 ? (" (CPU " + std::to_string(static_cast<int>(std::lround(cpu_ms))) + " ms)").c_str()
-                                          : "");
-        o.line = buf;
-        o.info = std::move(r.info);
-      } catch (const std::exception& e) {
-        o.line = std::string("splinefig figures: ") + e.what();
-      }
-      o.finished = true;
-      std::lock_guard<std::mutex> lock(mutex);
-      outcomes[i] = std::move(o);
-      ready.notify_all();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (size_t k = 0; k < workers; ++k) pool.emplace_back(work);
   std::vector<fig::FigureInfo> done;
   int failed = 0;
-  for (size_t i = 0; i < specs.size(); ++i) {
-    std::unique_lock<std::mutex> lock(mutex);
-    ready.wait(lock, [&] { return outcomes[i].finished; });
-    if (outcomes[i].info) {
-      std::printf("%s\n", outcomes[i].line.c_str());
+  fig::render_batch(chosen, options, [&](fig::BatchResult& r) {
+    if (r.info) {
+      std::printf("%s\n", progress_line(r).c_str());
       std::fflush(stdout);
-      done.push_back(std::move(*outcomes[i].info));
+      done.push_back(std::move(*r.info));
     } else {
       ++failed;
-      std::cerr << outcomes[i].line << "\n";
+      std::cerr << "splinefig figures: " << r.error << "\n";
     }
-  }
-  for (auto& t : pool) t.join();
-  fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(done));
-  fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(done));
-  const double total = std::chrono::duration<double>(clock::now() - start).count();
+  });
+  const std::vector<fig::FigureInfo> index =
+      a.only.empty() ? done : fig::merge_index(previous_index(a.out), done, specs, a.out);
+  fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
+  fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index));
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   std::printf("%zu figure%s in %.2f s (%.2f s CPU) -> %s/index.html\n", done.size(), done.size() == 1 ? "" : "s", total,
               cpu, a.out.c_str());
-  if (failed) throw Failure(std::to_string(failed) + " of " + std::to_string(specs.size()) + " figures failed");
+  if (failed) throw Failure(std::to_string(failed) + " of " + std::to_string(chosen.size()) + " figures failed");
   return 0;
 }
 

@@ -1,9 +1,10 @@
-// `splinefig kernel`: the basis function k(x) of a basis as x,k(x) lines (docs/cli.md).
+// `splinefig kernel`: a kernel k(x) (a basis function, box, tent, lanczos3) as x,k(x) lines,
+// its frequency response, or its filter analysis (kernel/analysis.hpp).
 #include "command.hpp"
 #include "csv.hpp"
 
-#include <splinefig/spline/basis.hpp>
-#include <splinefig/spline/filter_analysis.hpp>
+#include <splinefig/kernel/analysis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
 #include <string>
@@ -16,13 +17,13 @@ using splinefig::cli::Failure;
 
 struct Options {
   std::string basis, from = "-2", to = "2", step = "0.015625";
-  bool response = false, report = false;  // filter analysis (filter_analysis.hpp)
+  bool response = false, report = false;  // filter analysis (kernel/analysis.hpp)
   bool range_given = false;               // --from/--to/--step given: they apply to f too
 };
 
 constexpr double max_rows = 1e8;
 
-// A number about to be printed, refused if it is not finite (the basis overflows there).
+// A number about to be printed, refused if it is not finite (the kernel overflows there).
 double finite(double v, const std::string& basis, const char* what, double at) {
   if (!std::isfinite(v))
     throw Failure("--basis " + basis + ": " + what + cli::format_number(at) + " overflows the range of a double");
@@ -42,15 +43,18 @@ void check_report(const FilterReport& r, const std::string& basis) {
       throw Failure("--basis " + basis + ": the filter's " + name + " overflows the range of a double");
 }
 
-// --report: the filter's numbers; --response: f,|K(f)| lines (f in cycles per sample, by default
-// 0 to 2 in steps of 1/256). Any basis spec or box, tent, lanczos3.
-int run_filter(const Options& o) {
-  Filter f;
+Kernel parse(const Options& o) {
   try {
-    f = parse_filter(o.basis);
+    return parse_kernel(o.basis);
   } catch (const SpecError& e) {
     throw Failure(std::string("--basis: ") + e.what());
   }
+}
+
+// --report: the filter's numbers; --response: f,|K(f)| lines (f in cycles per sample, by default
+// 0 to 2 in steps of 1/256).
+int run_filter(const Options& o) {
+  const Kernel f = parse(o);
   if (o.report) {
     const FilterReport r = analyse(f);
     check_report(r, o.basis);
@@ -79,12 +83,7 @@ int run_filter(const Options& o) {
 
 int run(const Options& o) {
   if (o.response || o.report) return run_filter(o);
-  Basis b;
-  try {
-    b = parse_basis(o.basis);
-  } catch (const SpecError& e) {
-    throw Failure(std::string("--basis: ") + e.what());
-  }
+  const Kernel k = parse(o);
   const double x0 = cli::parse_number(o.from, "--from");
   const double x1 = cli::parse_number(o.to, "--to");
   const double step = cli::parse_number(o.step, "--step");
@@ -100,7 +99,7 @@ int run(const Options& o) {
     const double x = x0 + static_cast<double>(i) * step;
     cli::append_number(text, x);
     text += ',';
-    cli::append_number(text, finite(kernel(b, x), o.basis, "k(x) at x = ", x));
+    cli::append_number(text, finite(k(x), o.basis, "k(x) at x = ", x));
     text += '\n';
   }
   cli::write_stdout(text);
@@ -108,16 +107,17 @@ int run(const Options& o) {
 }
 
 const splinefig::cli::Registration reg{
-    "kernel", "Write the basis function k(x) of a basis as x,k(x) lines", [](CLI::App& app) {
+    "kernel", "Write a kernel k(x) (a basis function, box, tent, lanczos3) as x,k(x) lines", [](CLI::App& app) {
       auto o = std::make_shared<Options>();
-      app.add_option("--basis", o->basis, "Basis spec NAME[:key=value,...] (see splinefig eval --help)")
+      app.add_option("--basis", o->basis,
+                     "Basis spec NAME[:key=value,...] (see splinefig eval --help), or box, tent, lanczos3")
           ->required();
       app.add_option("--from", o->from, "First x (default -2)");
       app.add_option("--to", o->to, "Last x (default 2)");
       app.add_option("--step", o->step, "Step in x (default 1/64)");
       app.add_flag("--response", o->response,
                    "Write f,|K(f)| lines instead (f in cycles/sample; default 0 to 2 step 1/256, "
-                   "or --from/--to/--step); also box, tent, lanczos3");
+                   "or --from/--to/--step)");
       app.add_flag("--report", o->report,
                    "Print the filter's integral, continuity, droop, leakage, step response and "
                    "Mitchell-Netravali B,C");

@@ -3,6 +3,7 @@
 #include "command.hpp"
 
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/image/io.hpp>
 #include <splinefig/version.hpp>
 
 #include <filesystem>
@@ -40,10 +41,10 @@ const splinefig::cli::Registration reg{
           fig::FigureSpec spec = fig::load_spec(a->spec);
           fig::check_scaled_canvas(spec, a->scale, "--scale");
           fig::RenderedFigure r = fig::render_figure(spec, {a->scale, a->threads});
-          splinefig::render::WriteOptions w;
+          splinefig::WriteOptions w;
           w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
           w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
-          splinefig::render::write_image(r.image, a->out, w);
+          splinefig::write_image(a->out, r.image, w);
         } catch (const fig::SpecFileError& e) {
           throw Failure(e.what());
         }

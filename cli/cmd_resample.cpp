@@ -3,9 +3,9 @@
 #include "command.hpp"
 #include "csv.hpp"
 
-#include <splinefig/resample/image_io.hpp>
+#include <splinefig/image/io.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/filter_analysis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -44,9 +44,9 @@ int scaled(int src, double s, const char* axis, const std::string& text) {
 }
 
 int run(const Options& o) {
-  Filter filter;
+  Kernel filter;
   try {
-    filter = parse_filter(o.filter);
+    filter = parse_kernel(o.filter);
   } catch (const SpecError& e) {
     throw Failure(std::string("--filter: ") + e.what());
   }
@@ -72,17 +72,18 @@ int run(const Options& o) {
       throw Failure("-o " + o.out + ": unsupported output format '" + ext + "' (use .png or .exr)");
   }
 
-  LoadedImage src;
+  Image src;
+  FileFormat format;
   try {
-    src = read_image(o.in);
-  } catch (const ImageIOError& e) {
+    src = read_image(o.in, ReadMode::linear, &format);
+  } catch (const UnreadableImage& e) {
     throw Failure(e.what());
   }
   if (!scale.empty())
-    size = {scaled(src.image.width, scale[0], "width", o.scale), scaled(src.image.height, scale[1], "height", o.scale)};
-  if (static_cast<long long>(size.first) * size.second * src.image.channels > kMaxSamples)
+    size = {scaled(src.width, scale[0], "width", o.scale), scaled(src.height, scale[1], "height", o.scale)};
+  if (static_cast<long long>(size.first) * size.second * src.channels > kMaxSamples)
     throw Failure("output " + std::to_string(size.first) + "x" + std::to_string(size.second) + "x" +
-                  std::to_string(src.image.channels) + " is over the limit of 2^30 samples");
+                  std::to_string(src.channels) + " is over the limit of 2^30 samples");
 
   Image out;
   try {
@@ -90,9 +91,11 @@ int run(const Options& o) {
     opt.edge = *edge;
     opt.interpolating = o.interpolating;
     opt.threads = o.threads;
-    out = resample(src.image, size.first, size.second, filter, opt);
-    write_image(o.out, out, src.format);
-  } catch (const ImageIOError& e) {
+    out = resample(src, size.first, size.second, filter, opt);
+    WriteOptions w;
+    w.bits = format.name == "png" && format.bits == 16 ? 16 : 8;
+    write_image(o.out, out, w);
+  } catch (const UnwritableImage& e) {
     throw Failure(e.what());
   } catch (const std::invalid_argument& e) {
     throw Failure(e.what());

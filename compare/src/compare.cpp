@@ -1,5 +1,6 @@
 // One comparison and its reports (see compare.hpp).
 #include <splinefig/compare/compare.hpp>
+#include <splinefig/image/srgb.hpp>
 
 #include <splinefig/compare/perceptual.hpp>
 #include <splinefig/compare/report.hpp>

@@ -1,6 +1,7 @@
 // LDR-FLIP (see perceptual.hpp). Every 2-D filter of the paper is a sum of separable
 // Gaussians, so it is applied as row and column passes; borders replicate the edge pixels.
 #include <splinefig/compare/perceptual.hpp>
+#include <splinefig/image/srgb.hpp>
 
 #include <algorithm>
 #include <array>

@@ -1,41 +1,10 @@
-// Image value type helpers: windows, padding, alpha removal, sRGB transfer functions.
+// Windows, padding and alpha removal (see image.hpp).
 #include <splinefig/compare/image.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace splinefig::compare {
-
-std::vector<std::string> default_channel_names(int channels) {
-  switch (channels) {
-    case 1: return {"Y"};
-    case 2: return {"Y", "A"};
-    case 3: return {"R", "G", "B"};
-    case 4: return {"R", "G", "B", "A"};
-    default: break;
-  }
-  std::vector<std::string> names;
-  for (int c = 0; c < channels; ++c) names.push_back("channel" + std::to_string(c));
-  return names;
-}
-
-Image Image::zeros(int width, int height, int channels, Encoding encoding) {
-  Image im;
-  im.width = width;
-  im.height = height;
-  im.channels = channels;
-  im.channel_names = default_channel_names(channels);
-  im.alpha_channel = (channels == 2 || channels == 4) ? channels - 1 : -1;
-  im.encoding = encoding;
-  im.pixels.assign(std::size_t(width) * std::size_t(height) * std::size_t(channels), 0.0f);
-  return im;
-}
-
-Image Image::from_linear_rgba(int width, int height, const float* rgba) {
-  Image im = zeros(width, height, 4, Encoding::linear);
-  std::copy(rgba, rgba + im.pixels.size(), im.pixels.begin());
-  return im;
-}
 
 Window union_window(const Window& a, const Window& b) {
   if (a.width <= 0 || a.height <= 0) return b;
@@ -76,35 +45,6 @@ Image without_alpha(const Image& im) {
   for (std::size_t p = 0; p < im.pixel_count(); ++p)
     for (int c = 0; c < im.channels; ++c)
       if (c != im.alpha_channel) out.pixels[k++] = im.pixels[p * std::size_t(im.channels) + std::size_t(c)];
-  return out;
-}
-
-float srgb_to_linear(float v) {
-  if (v <= 0.04045f) return v / 12.92f;
-  return float(std::pow((double(v) + 0.055) / 1.055, 2.4));
-}
-
-float linear_to_srgb(float v) {
-  if (v <= 0.0031308f) return v * 12.92f;
-  return float(1.055 * std::pow(double(v), 1.0 / 2.4) - 0.055);
-}
-
-Image to_linear(const Image& im) {
-  if (im.encoding == Encoding::linear) return im;
-  Image out = im;
-  out.encoding = Encoding::linear;
-  const int a = im.alpha_channel;
-  for (std::size_t p = 0; p < im.pixel_count(); ++p) {
-    float* px = out.pixels.data() + p * std::size_t(im.channels);
-    const float alpha = a >= 0 ? px[a] : 1.0f;
-    for (int c = 0; c < im.channels; ++c) {
-      if (c == a) continue;
-      if (alpha > 0.0f && alpha != 1.0f)
-        px[c] = srgb_to_linear(px[c] / alpha) * alpha;
-      else
-        px[c] = srgb_to_linear(px[c]);
-    }
-  }
   return out;
 }
 

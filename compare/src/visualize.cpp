@@ -1,5 +1,6 @@
 // Difference image and triptych (see visualize.hpp).
 #include <splinefig/compare/visualize.hpp>
+#include <splinefig/image/srgb.hpp>
 
 #include <algorithm>
 #include <cmath>

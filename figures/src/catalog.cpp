@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -155,6 +156,217 @@ std::string index_json(const std::vector<FigureInfo>& figures) {
   }
   o << "\n  ]\n}\n";
   return o.str();
+}
+
+namespace {
+
+// A JSON value: just what index.json holds.
+struct JsonValue {
+  enum class Type { Null, Bool, Number, String, Array, Object } type = Type::Null;
+  double number = 0;
+  std::string string;
+  std::vector<JsonValue> array;
+  std::vector<std::pair<std::string, JsonValue>> object;
+};
+
+class JsonReader {
+ public:
+  explicit JsonReader(const std::string& text) : s_(text) {}
+  JsonValue document() {
+    JsonValue v = value(0);
+    space();
+    if (i_ != s_.size()) fail("text after the end");
+    return v;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw std::runtime_error("index.json: " + what + " at byte " + std::to_string(i_));
+  }
+  void space() {
+    while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\r' || s_[i_] == '\t')) ++i_;
+  }
+  bool take(char c) {
+    space();
+    if (i_ < s_.size() && s_[i_] == c) return ++i_, true;
+    return false;
+  }
+  std::string text() {
+    if (!take('"')) fail("expected a string");
+    std::string out;
+    while (true) {
+      if (i_ >= s_.size()) fail("unterminated string");
+      char c = s_[i_++];
+      if (c == '"') return out;
+      if (c != '\\') {
+        out += c;
+        continue;
+      }
+      if (i_ >= s_.size()) fail("unterminated string");
+      char e = s_[i_++];
+      switch (e) {
+        case 'n': out += '\n'; break;
+        case 't': out += '\t'; break;
+        case 'r': out += '\r'; break;
+        case 'b': out += '\b'; break;
+        case 'f': out += '\f'; break;
+        case 'u': {
+          if (i_ + 4 > s_.size()) fail("bad \\u escape");
+          unsigned code = 0;
+          auto r = std::from_chars(s_.data() + i_, s_.data() + i_ + 4, code, 16);
+          if (r.ptr != s_.data() + i_ + 4 || code >= 0x80) fail("unsupported \\u escape");
+          out += static_cast<char>(code);
+          i_ += 4;
+          break;
+        }
+        default: out += e;
+      }
+    }
+  }
+  JsonValue value(int depth) {
+    if (depth > 16) fail("nested too deeply");
+    space();
+    if (i_ >= s_.size()) fail("unexpected end");
+    JsonValue v;
+    const char c = s_[i_];
+    if (c == '{') {
+      ++i_;
+      v.type = JsonValue::Type::Object;
+      if (take('}')) return v;
+      do {
+        std::string key = text();
+        if (!take(':')) fail("expected ':'");
+        v.object.emplace_back(std::move(key), value(depth + 1));
+      } while (take(','));
+      if (!take('}')) fail("expected '}'");
+    } else if (c == '[') {
+      ++i_;
+      v.type = JsonValue::Type::Array;
+      if (take(']')) return v;
+      do v.array.push_back(value(depth + 1));
+      while (take(','));
+      if (!take(']')) fail("expected ']'");
+    } else if (c == '"') {
+      v.type = JsonValue::Type::String;
+      v.string = text();
+    } else if (s_.compare(i_, 4, "null") == 0) {
+      i_ += 4;
+    } else if (s_.compare(i_, 4, "true") == 0 || s_.compare(i_, 5, "false") == 0) {
+      v.type = JsonValue::Type::Bool;
+      i_ += s_[i_] == 't' ? 4 : 5;
+    } else {
+      v.type = JsonValue::Type::Number;
+      auto r = std::from_chars(s_.data() + i_, s_.data() + s_.size(), v.number);
+      if (r.ec != std::errc()) fail("expected a value");
+      i_ = static_cast<size_t>(r.ptr - s_.data());
+    }
+    return v;
+  }
+  const std::string& s_;
+  size_t i_ = 0;
+};
+
+const JsonValue& member(const JsonValue& v, const std::string& key) {
+  if (v.type != JsonValue::Type::Object) throw std::runtime_error("index.json: expected an object holding \"" + key + "\"");
+  for (const auto& [k, m] : v.object)
+    if (k == key) return m;
+  throw std::runtime_error("index.json: missing \"" + key + "\"");
+}
+
+const std::vector<JsonValue>& array_of(const JsonValue& v, const std::string& key) {
+  const JsonValue& a = member(v, key);
+  if (a.type != JsonValue::Type::Array) throw std::runtime_error("index.json: \"" + key + "\" is not an array");
+  return a.array;
+}
+
+std::string string_of(const JsonValue& v, const std::string& key) {
+  const JsonValue& s = member(v, key);
+  if (s.type != JsonValue::Type::String) throw std::runtime_error("index.json: \"" + key + "\" is not a string");
+  return s.string;
+}
+
+double number_of(const JsonValue& v) {
+  if (v.type == JsonValue::Type::Null) return std::numeric_limits<double>::quiet_NaN();  // json_number's non-finite
+  if (v.type != JsonValue::Type::Number) throw std::runtime_error("index.json: expected a number");
+  return v.number;
+}
+
+template <size_t N>
+std::array<double, N> numbers_of(const JsonValue& v, const std::string& key) {
+  const auto& a = array_of(v, key);
+  if (a.size() != N) throw std::runtime_error("index.json: \"" + key + "\" needs " + std::to_string(N) + " numbers");
+  std::array<double, N> out{};
+  for (size_t i = 0; i < N; ++i) out[i] = number_of(a[i]);
+  return out;
+}
+
+Scale scale_of(const JsonValue& v, const std::string& key) {
+  const std::string s = string_of(v, key);
+  if (s == "linear") return Scale::Linear;
+  if (s == "log") return Scale::Log;
+  if (s == "db") return Scale::Decibel;
+  throw std::runtime_error("index.json: \"" + key + "\" is \"" + s + "\", not linear, log or db");
+}
+
+}  // namespace
+
+std::vector<FigureInfo> read_index_json(const std::string& text) {
+  const JsonValue doc = JsonReader(text).document();
+  std::vector<FigureInfo> figures;
+  for (const JsonValue& f : array_of(doc, "figures")) {
+    FigureInfo info;
+    info.name = string_of(f, "name");
+    info.title = string_of(f, "title");
+    info.caption = string_of(f, "caption");
+    for (const JsonValue& file : array_of(f, "files")) {
+      if (file.type != JsonValue::Type::String) throw std::runtime_error("index.json: \"files\" holds a non-string");
+      info.files.push_back(file.string);
+    }
+    info.width = static_cast<int>(number_of(member(f, "width")));
+    info.height = static_cast<int>(number_of(member(f, "height")));
+    for (const JsonValue& a : array_of(f, "axes")) {
+      AxesInfo ax;
+      ax.pixel_box = numbers_of<4>(a, "pixel_box");
+      ax.x_range = numbers_of<2>(a, "x_range");
+      ax.y_range = numbers_of<2>(a, "y_range");
+      ax.x_scale = scale_of(a, "x_scale");
+      ax.y_scale = scale_of(a, "y_scale");
+      for (const JsonValue& s : array_of(a, "series"))
+        ax.series.push_back({string_of(s, "label"), string_of(s, "color"), string_of(s, "kind")});
+      info.axes.push_back(std::move(ax));
+    }
+    figures.push_back(std::move(info));
+  }
+  return figures;
+}
+
+std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, const std::vector<FigureInfo>& rendered,
+                                    const std::vector<SpecFile>& specs, const std::string& dir) {
+  auto named = [](const std::vector<FigureInfo>& list, const std::string& name) -> const FigureInfo* {
+    for (const auto& f : list)
+      if (f.name == name) return &f;
+    return nullptr;
+  };
+  auto still_there = [&](const FigureInfo& f) {
+    if (named(rendered, f.name)) return false;
+    std::error_code ec;
+    for (const auto& file : f.files)
+      if (!fs::is_regular_file(fs::path(dir) / file, ec)) return false;
+    return !f.files.empty();
+  };
+  std::vector<FigureInfo> out;
+  auto listed = [&](const std::string& name) {
+    return std::any_of(specs.begin(), specs.end(), [&](const SpecFile& s) { return s.name == name; });
+  };
+  for (const SpecFile& s : specs) {
+    if (const FigureInfo* f = named(rendered, s.name)) out.push_back(*f);
+    else if (const FigureInfo* p = named(previous, s.name); p && still_there(*p)) out.push_back(*p);
+  }
+  for (const auto& f : rendered)
+    if (!listed(f.name)) out.push_back(f);
+  for (const auto& p : previous)
+    if (!listed(p.name) && still_there(p) && !named(out, p.name)) out.push_back(p);
+  return out;
 }
 
 std::string gallery_html(const std::vector<FigureInfo>& figures) {

@@ -1,10 +1,11 @@
 // The filter figures' plot elements (filter_figures.hpp): data from the filter analysis
-// (spline/filter_analysis.hpp) and the resampler (resample/resample.hpp), computed at load time.
+// (kernel/analysis.hpp) and the resampler (resample/resample.hpp), computed at load time.
 #include "filter_figures.hpp"
 
 #include <splinefig/resample/prefilter.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/filter_analysis.hpp>
+#include <splinefig/kernel/analysis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -15,11 +16,11 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Filter filter_key(TableReader& r) {
+Kernel filter_key(TableReader& r) {
   auto spec = r.opt_string("filter");
   if (!spec) r.fail("filter", "needs filter = \"SPEC\" (a basis spec, box, tent or lanczos3)");
   try {
-    return parse_filter(*spec);
+    return parse_kernel(*spec);
   } catch (const SpecError& e) {
     r.fail("filter", e.what());
   }
@@ -55,27 +56,27 @@ SeriesElement styled(TableReader& r) {
 // k(s) on [s0, s1]: 1024 even steps plus both one-sided values at every breakpoint, so jumps
 // (the box) are drawn upright.
 SeriesElement parse_filter_curve(TableReader& r) {
-  const Filter f = filter_key(r);
-  const auto [s0, s1] = range_key(r, {f.support.lo, f.support.hi});
+  const Kernel f = filter_key(r);
+  const auto [s0, s1] = range_key(r, {f.support().lo, f.support().hi});
   SeriesElement s = styled(r);
-  std::vector<double> breaks{f.support.lo, f.support.hi};
-  for (const auto& p : f.pieces) breaks.push_back(p.lo);
+  std::vector<double> breaks{f.support().lo, f.support().hi};
+  for (size_t p = 0; p < f.pieces().size(); ++p) breaks.push_back(f.lo() + double(p));
   const int n = 1024;
   for (int i = 0; i <= n; ++i) {
     const double x = s0 + (s1 - s0) * i / n;
-    s.points.push_back({x, evaluate(f, x)});
+    s.points.push_back({x, f(x)});
   }
   for (double b : breaks)
     if (b > s0 && b < s1) {
-      s.points.push_back({b, evaluate(f, std::nextafter(b, -std::numeric_limits<double>::infinity()))});
-      s.points.push_back({b, evaluate(f, b)});
+      s.points.push_back({b, f(std::nextafter(b, -std::numeric_limits<double>::infinity()))});
+      s.points.push_back({b, f(b)});
     }
   std::stable_sort(s.points.begin(), s.points.end(), [](const Vec2& a, const Vec2& b) { return a.x < b.x; });
   return s;
 }
 
 SeriesElement parse_response(TableReader& r) {
-  const Filter f = filter_key(r);
+  const Kernel f = filter_key(r);
   const auto [f0, f1] = range_key(r, {0.0, 2.0});
   const int n = r.integer("samples", 801, 2, 100000);
   SeriesElement s = styled(r);
@@ -89,7 +90,7 @@ SeriesElement parse_response(TableReader& r) {
 // X(t) = sum_j c_j k(t - j) / sum_j k(t - j) for samples at t = 0 .. n-1, extended beyond them
 // by the edge mode (default clamp); c = the samples, or their inverse prefilter.
 SeriesElement parse_step(TableReader& r) {
-  const Filter f = filter_key(r);
+  const Kernel f = filter_key(r);
   std::vector<double> values = r.has("values") ? r.numbers("values") : std::vector<double>{0, 0, 0, 0, 1, 1, 1, 1};
   if (values.empty()) r.fail("values", "needs at least one sample");
   const long n = static_cast<long>(values.size());
@@ -111,8 +112,8 @@ SeriesElement parse_step(TableReader& r) {
   for (long i = 0; i <= count; ++i) {
     const double t = t0 + double(i) * step;
     double num = 0, den = 0;
-    for (double j = std::ceil(t - f.support.hi); j <= std::floor(t - f.support.lo); j += 1) {
-      const double k = evaluate(f, t - j);
+    for (double j = std::ceil(t - f.support().hi); j <= std::floor(t - f.support().lo); j += 1) {
+      const double k = f(t - j);
       den += k;
       const long q = edge_index(static_cast<long>(j), n, edge);
       if (q >= 0) num += k * c[static_cast<size_t>(q)];
@@ -126,7 +127,7 @@ SeriesElement parse_step(TableReader& r) {
 // image centre, in pixels): its local frequency r/N reaches Nyquist at the edges' midpoints and
 // passes it towards the corners. Resampled to `size` with the filter and cropped.
 ImageElement parse_zoneplate(TableReader& r) {
-  const Filter f = filter_key(r);
+  const Kernel f = filter_key(r);
   const int n = r.integer("source", 64, 2, 4096);
   const int size = r.integer("size", 8 * n, 1, 4096);
   ResampleOptions opt;

@@ -3,8 +3,9 @@
 
 #include "rich_text.hpp"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imageio.h>
+#include <splinefig/image/io.hpp>
+#include <splinefig/image/srgb.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
 #include <map>
@@ -82,101 +83,62 @@ render::TextExtent Painter::measure(const std::string& s, const Font& f) const {
   return e;
 }
 
-render::PixelFilter pixel_filter(const std::string& spec) {
-  if (spec == "box") return render::PixelFilter::box();
-  if (spec == "tent") return render::PixelFilter::tent();
-  Basis b = parse_basis(spec);
-  // The kernel's pieces on unit intervals, in ascending powers of the local variable:
-  // piece p is column n - p of M (kernel convention), whose u^(n-r) coefficient is M(r, c).
-  render::PixelFilter f;
-  f.kind = render::PixelFilter::Kind::Piecewise;
-  f.lo = kernel_support(b).lo;
-  f.name = b.spec;
-  const int n = b.degree;
-  for (int p = 0; p <= n; ++p) {
-    std::vector<double> coeffs(static_cast<size_t>(n + 1));
-    for (int r = 0; r <= n; ++r) coeffs[n - r] = b(r, n - p);
-    f.pieces.push_back(std::move(coeffs));
-  }
-  return f;
-}
+Kernel pixel_filter(const std::string& spec) { return parse_kernel(spec); }
 
 Vec2 raster_size(const Raster& r) {
   if (r.file.empty()) return {static_cast<double>(r.width), static_cast<double>(r.height)};
-  auto in = OIIO::ImageInput::open(r.file);
-  if (!in) throw std::runtime_error("cannot read image \"" + r.file + "\"");
-  Vec2 s{static_cast<double>(in->spec().width), static_cast<double>(in->spec().height)};
-  in->close();
-  return s;
+  const Image im = read_image(r.file, ReadMode::linear);
+  return {static_cast<double>(im.width), static_cast<double>(im.height)};
 }
 
 namespace {
 
-// Reads or builds the raster as premultiplied linear RGBA, w x h.
-struct Pixels {
-  int w = 0, h = 0;
-  std::vector<float> rgba;
-};
-
-Pixels load(const Raster& r) {
-  Pixels px;
+// The raster as linear-light RGBA with associated alpha (the renderer's form): a file is
+// read decoded (io.hpp), inline data is grey, opaque.
+Image load(const Raster& r) {
   if (!r.file.empty()) {
-    OIIO::ImageBuf buf(r.file);
-    if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-      throw std::runtime_error("cannot read image \"" + r.file + "\": " + buf.geterror());
-    const OIIO::ImageSpec& spec = buf.spec();
-    px.w = spec.width;
-    px.h = spec.height;
-    int nc = spec.nchannels;
-    std::vector<float> raw(static_cast<size_t>(px.w) * px.h * nc);
-    buf.get_pixels(OIIO::ROI(0, px.w, 0, px.h, 0, 1, 0, nc), OIIO::TypeDesc::FLOAT, raw.data());
-    std::string cs = spec.get_string_attribute("oiio:ColorSpace");
-    bool srgb = cs.empty() ? (spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16)
-                           : (cs == "sRGB" || cs == "srgb");
-    px.rgba.resize(static_cast<size_t>(px.w) * px.h * 4);
-    for (size_t i = 0; i < static_cast<size_t>(px.w) * px.h; ++i) {
-      const float* s = &raw[i * nc];
-      float rgb[3];
-      for (int k = 0; k < 3; ++k) rgb[k] = nc >= 3 ? s[k] : s[0];
-      float a = nc == 4 ? s[3] : (nc == 2 ? s[1] : 1.0f);
-      for (int k = 0; k < 3; ++k) {
-        float v = srgb ? render::srgb_to_linear(rgb[k]) : rgb[k];
-        px.rgba[i * 4 + k] = v * a;  // file alpha is straight (PNG) - premultiply
-      }
-      px.rgba[i * 4 + 3] = a;
+    const Image src = read_image(r.file, ReadMode::linear);
+    Image px(src.width, src.height, 4);
+    const int nc = src.channels, a = src.alpha_channel;
+    for (std::size_t i = 0; i < src.pixel_count(); ++i) {
+      const float* s = &src.pixels[i * std::size_t(nc)];
+      float* d = &px.pixels[i * 4];
+      int colour[3], k = 0;
+      for (int c = 0; c < nc && k < 3; ++c)
+        if (c != a) colour[k++] = c;
+      for (int c = 0; c < 3; ++c) d[c] = k == 3 ? s[colour[c]] : (k > 0 ? s[colour[0]] : 0.0f);
+      d[3] = a >= 0 ? s[a] : 1.0f;
     }
-  } else {
-    px.w = r.width;
-    px.h = r.height;
-    px.rgba.resize(static_cast<size_t>(px.w) * px.h * 4);
-    for (size_t i = 0; i < static_cast<size_t>(px.w) * px.h; ++i) {
-      float v = r.data[i * r.channels];
-      if (r.srgb_data) v = render::srgb_to_linear(v);
-      for (int k = 0; k < 3; ++k) px.rgba[i * 4 + k] = v;
-      px.rgba[i * 4 + 3] = 1;
-    }
+    return px;
+  }
+  Image px(r.width, r.height, 4);
+  for (std::size_t i = 0; i < px.pixel_count(); ++i) {
+    float v = r.data[i * r.channels];
+    if (r.srgb_data) v = srgb_to_linear(v);
+    for (int k = 0; k < 3; ++k) px.pixels[i * 4 + k] = v;
+    px.pixels[i * 4 + 3] = 1;
   }
   return px;
 }
 
 // Composites the raster over the target rectangle [x0,x1) x [y0,y1) (output pixels):
 // each covered output pixel samples the source at its centre, nearest or bilinear.
-void composite(render::Image& dst, const Pixels& src, const Raster& r, double x0, double y0, double x1, double y1) {
+void composite(Image& dst, const Image& src, const Raster& r, double x0, double y0, double x1, double y1) {
   int ix0 = std::max(0, static_cast<int>(std::floor(std::min(x0, x1))));
   int ix1 = std::min(dst.width, static_cast<int>(std::ceil(std::max(x0, x1))));
   int iy0 = std::max(0, static_cast<int>(std::floor(std::min(y0, y1))));
   int iy1 = std::min(dst.height, static_cast<int>(std::ceil(std::max(y0, y1))));
   auto fetch = [&](int x, int y, int k) {
-    x = std::clamp(x, 0, src.w - 1);
-    y = std::clamp(y, 0, src.h - 1);
-    return src.rgba[(static_cast<size_t>(y) * src.w + x) * 4 + k];
+    x = std::clamp(x, 0, src.width - 1);
+    y = std::clamp(y, 0, src.height - 1);
+    return src.at(x, y, k);
   };
   for (int y = iy0; y < iy1; ++y) {
     for (int x = ix0; x < ix1; ++x) {
       double cx = x + 0.5, cy = y + 0.5;
       // Pixels of the target whose centre lies inside the rectangle.
       if (cx < std::min(x0, x1) || cx >= std::max(x0, x1) || cy < std::min(y0, y1) || cy >= std::max(y0, y1)) continue;
-      double sx = (cx - x0) / (x1 - x0) * src.w, sy = (cy - y0) / (y1 - y0) * src.h;
+      double sx = (cx - x0) / (x1 - x0) * src.width, sy = (cy - y0) / (y1 - y0) * src.height;
       float s[4];
       if (r.nearest) {
         int px = static_cast<int>(std::floor(sx)), py = static_cast<int>(std::floor(sy));
@@ -195,10 +157,10 @@ void composite(render::Image& dst, const Pixels& src, const Raster& r, double x0
   }
 }
 
-void over(render::Image& dst, const render::Image& src) {
-  for (size_t i = 0; i < dst.rgba.size(); i += 4) {
-    float a = src.rgba[i + 3];
-    for (int k = 0; k < 4; ++k) dst.rgba[i + k] = src.rgba[i + k] + dst.rgba[i + k] * (1 - a);
+void over(Image& dst, const Image& src) {
+  for (size_t i = 0; i < dst.pixels.size(); i += 4) {
+    float a = src.pixels[i + 3];
+    for (int k = 0; k < 4; ++k) dst.pixels[i + k] = src.pixels[i + k] + dst.pixels[i + k] * (1 - a);
   }
 }
 
@@ -234,10 +196,10 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
 
 }  // namespace
 
-render::Image paint(const Painter& p, int width, int height, Color background, const render::PixelFilter& filter,
+Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,
                     int threads) {
   const double s = p.scale();
-  render::Image result;
+  Image result;
   bool first = true;
   auto layer_start = p.ops().begin();
   auto flush = [&](auto end) {
@@ -265,7 +227,7 @@ render::Image paint(const Painter& p, int width, int height, Color background, c
           },
           *it);
     }
-    render::Image img = render::rasterize(scene, threads);
+    Image img = render::rasterize(scene, threads);
     if (first) result = std::move(img);
     else over(result, img);
     first = false;

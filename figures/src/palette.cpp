@@ -1,6 +1,7 @@
 // Palettes. Viridis: the 11 samples at t = 0, 0.1, ..., 1 of matplotlib's colormap
 // (van der Walt and Smith, 2015), interpolated linearly in sRGB.
 #include <splinefig/figures/palette.hpp>
+#include <splinefig/image/srgb.hpp>
 
 #include <algorithm>
 #include <array>
@@ -16,8 +17,8 @@ constexpr std::array<unsigned, 10> kTab10 = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62
                                              0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
 
 render::Color from_srgb(double r, double g, double b) {
-  return {render::srgb_to_linear(static_cast<float>(r)), render::srgb_to_linear(static_cast<float>(g)),
-          render::srgb_to_linear(static_cast<float>(b)), 1};
+  return {splinefig::srgb_to_linear(static_cast<float>(r)), splinefig::srgb_to_linear(static_cast<float>(g)),
+          splinefig::srgb_to_linear(static_cast<float>(b)), 1};
 }
 
 double channel(unsigned rgb, int shift) { return ((rgb >> shift) & 0xff) / 255.0; }
@@ -48,7 +49,7 @@ render::Color palette_color(std::string_view name, int i, int n) {
 }
 
 std::string to_hex(render::Color c) {
-  auto q = [](float v) { return static_cast<int>(std::lround(std::clamp(render::linear_to_srgb(v), 0.0f, 1.0f) * 255.0f)); };
+  auto q = [](float v) { return static_cast<int>(std::lround(std::clamp(splinefig::linear_to_srgb(v), 0.0f, 1.0f) * 255.0f)); };
   char buf[8];
   std::snprintf(buf, sizeof buf, "#%02x%02x%02x", q(c.r), q(c.g), q(c.b));
   return buf;

@@ -212,6 +212,38 @@ static void collect(TableReader& r, std::string_view key, std::vector<std::pair<
 
 }  // namespace detail
 
+namespace {
+
+std::string cell_name(const std::array<int, 2>& c) {
+  return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + "]";
+}
+
+// Gives every panel without `cell` or `box` the first cell in reading order that no explicit
+// `cell` claims and no earlier automatic panel took; explicit cells must lie in the grid.
+void place_panels(FigureSpec& spec) {
+  const Layout& L = spec.layout;
+  const std::string grid = std::to_string(L.rows) + "x" + std::to_string(L.cols) + " layout (add [layout] rows/cols)";
+  std::vector<char> taken(static_cast<size_t>(L.rows) * L.cols, 0);
+  for (const auto& item : spec.items)
+    if (const auto* ax = std::get_if<AxesSpec>(&item); ax && ax->cell) {
+      const auto [r, c] = *ax->cell;
+      if (r >= L.rows || c >= L.cols)
+        throw SpecFileError(ax->where + ": axes.cell: " + cell_name(*ax->cell) + " is outside the " + grid);
+      taken[static_cast<size_t>(r) * L.cols + c] = 1;
+    }
+  size_t next = 0;
+  for (auto& item : spec.items) {
+    auto* ax = std::get_if<AxesSpec>(&item);
+    if (!ax || ax->cell || ax->box) continue;
+    while (next < taken.size() && taken[next]) ++next;
+    if (next == taken.size()) throw SpecFileError(ax->where + ": axes: no free cell left in the " + grid);
+    taken[next] = 1;
+    ax->cell = std::array<int, 2>{static_cast<int>(next) / L.cols, static_cast<int>(next) % L.cols};
+  }
+}
+
+}  // namespace
+
 FigureSpec parse_spec(std::string_view text, const std::string& name, const std::string& base_dir) {
   using namespace detail;
   toml::table doc;
@@ -254,20 +286,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [line, item] : items) spec.items.push_back(std::move(item));
 
-  // Panels placed in the layout grid must fit in it.
-  int next = 0;
-  for (auto& item : spec.items) {
-    if (auto* ax = std::get_if<AxesSpec>(&item)) {
-      if (!ax->cell && !ax->box) {
-        ax->cell = std::array<int, 2>{next / spec.layout.cols, next % spec.layout.cols};
-        ++next;
-      }
-      if (ax->cell && ((*ax->cell)[0] >= spec.layout.rows || (*ax->cell)[1] >= spec.layout.cols))
-        throw SpecFileError(ax->where + ": axes.cell: [" + std::to_string((*ax->cell)[0]) + ", " +
-                            std::to_string((*ax->cell)[1]) + "] is outside the " + std::to_string(spec.layout.rows) +
-                            "x" + std::to_string(spec.layout.cols) + " layout (add [layout] rows/cols)");
-    }
-  }
+  place_panels(spec);
   return spec;
 }
 

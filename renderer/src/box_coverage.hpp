@@ -29,6 +29,12 @@ struct BoxRow {
     cmin = width + 1;
     cmax = -1;
   }
+  // floor(x) clamped to [0, width], without a libm call (x is clipped to the canvas already).
+  int column(double x) const {
+    x = std::clamp(x, -1.0, static_cast<double>(width) + 1.0);
+    const int i = static_cast<int>(x);  // truncation: floor for x >= 0
+    return std::clamp(i - (static_cast<double>(i) > x ? 1 : 0), 0, width);
+  }
   void cell(int i, double dy, double xmean, double s) {
     const double a = dy * (static_cast<double>(i + 1) - xmean);
     acc[static_cast<std::size_t>(i)] += s * a;
@@ -37,9 +43,7 @@ struct BoxRow {
   void edge(double xa, double ya, double xb, double yb, double s) {
     const double dy = yb - ya;
     if (xa > xb) std::swap(xa, xb);  // the region right of the edge does not depend on direction
-    const int W = width;
-    int i0 = std::clamp(static_cast<int>(std::floor(xa)), 0, W);
-    int i1 = std::clamp(static_cast<int>(std::floor(xb)), 0, W);
+    int i0 = column(xa), i1 = column(xb);
     if (i1 > i0 && static_cast<double>(i1) == xb) --i1;  // ends exactly on a column boundary
     cmin = std::min(cmin, i0);
     cmax = std::max(cmax, i1);
@@ -47,17 +51,28 @@ struct BoxRow {
       cell(i0, dy, 0.5 * (xa + xb), s);
       return;
     }
+    // The same sums as cell() for each column in turn, with the share a column passes to the
+    // next (`carry`) kept in a register: a column crossed fully gets dy/dx, half its own and
+    // half passed on, exactly as cell() would compute it.
     const double dydx = dy / (xb - xa);
-    double used = 0;
-    double x = xa;
-    for (int i = i0; i < i1; ++i) {
-      const double xn = static_cast<double>(i + 1);
-      const double d = (xn - x) * dydx;
-      cell(i, d, 0.5 * (x + xn), s);
-      used += d;
-      x = xn;
+    double* acc_p = acc.data();
+    double x = static_cast<double>(i0 + 1);
+    double d = (x - xa) * dydx;
+    double a = d * (x - 0.5 * (xa + x));
+    acc_p[i0] += s * a;
+    double carry = s * (d - a);
+    double used = d;
+    const double h = s * (dydx * 0.5);
+    for (int i = i0 + 1; i < i1; ++i) {
+      acc_p[i] = (acc_p[i] + carry) + h;
+      carry = h;
+      used += dydx;
     }
-    cell(i1, dy - used, 0.5 * (x + xb), s);
+    x = static_cast<double>(i1);
+    d = dy - used;
+    a = d * (static_cast<double>(i1 + 1) - 0.5 * (x + xb));
+    acc_p[i1] = (acc_p[i1] + carry) + s * a;
+    acc_p[i1 + 1] += s * (d - a);
   }
 };
 

@@ -18,12 +18,12 @@ void ChainBuilder::close() {
   open_contour_ = false;
 }
 
-void ChainBuilder::line_to(Vec2 b) {
+void ChainBuilder::line_to_slow(Vec2 b) {
   if (!open_contour_) {
     start_ = cur_;
     open_contour_ = true;
   }
-  segment_to(Vec2{b.x - shift_.x, b.y - shift_.y});
+  segment_to(b);
 }
 
 void ChainBuilder::segment_to(Vec2 b) {

@@ -35,7 +35,17 @@ class ChainBuilder {
   // Points are translated by -shift on input; `clip` is in the translated coordinates.
   ChainBuilder(Geometry& g, Box clip, Vec2 shift = {}) : g_(g), clip_(clip), shift_(shift) {}
   void move_to(Vec2 p);
-  void line_to(Vec2 p);
+  void line_to(Vec2 p) {
+    const Vec2 b{p.x - shift_.x, p.y - shift_.y};
+    // The common case, inline: inside the clip box, continuing the current chain.
+    if (in_chain_ && b.x >= clip_.x0 && b.x <= clip_.x1 && b.y >= clip_.y0 && b.y <= clip_.y1 &&
+        (b.y - cur_.y) * chain_dir_ > 0 && g_.verts.back() == cur_) {
+      cur_ = b;
+      g_.verts.push_back(b);
+      return;
+    }
+    line_to_slow(b);
+  }
   // Room for about n more vertices (avoids regrowing a large vertex array many times).
   void expect(std::size_t n) {
     auto& v = g_.verts;
@@ -45,7 +55,8 @@ class ChainBuilder {
   const Box& clip() const { return clip_; }  // in input coordinates when shift is zero
 
  private:
-  void segment_to(Vec2 b);  // translated coordinates
+  void line_to_slow(Vec2 b);  // translated coordinates
+  void segment_to(Vec2 b);    // translated coordinates
   void clip_y(Vec2 a, Vec2 b);
   void edge(Vec2 a, Vec2 b);
   void end_chain();

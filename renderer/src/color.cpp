@@ -1,19 +1,10 @@
-// sRGB <-> linear light (IEC 61966-2-1: the piecewise curve, not a 2.2 power) and hex colours.
+// Hex colours (sRGB, decoded with the curve of image/srgb.hpp).
+#include <splinefig/image/srgb.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
 #include <cmath>
 
 namespace splinefig::render {
-
-float srgb_to_linear(float v) {
-  if (v <= 0.04045f) return v / 12.92f;
-  return static_cast<float>(std::pow((static_cast<double>(v) + 0.055) / 1.055, 2.4));
-}
-
-float linear_to_srgb(float v) {
-  if (v <= 0.0031308f) return 12.92f * v;
-  return static_cast<float>(1.055 * std::pow(static_cast<double>(v), 1.0 / 2.4) - 0.055);
-}
 
 std::optional<Color> parse_hex_color(std::string_view hex) {
   if (hex.size() != 7 && hex.size() != 9) return std::nullopt;

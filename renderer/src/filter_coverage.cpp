@@ -100,25 +100,25 @@ struct MomentRow {
 
 }  // namespace
 
-FilterGrid make_filter_grid(const PixelFilter& f, int width, int height) {
+bool exact_area(const Kernel& k) {
+  return k.polynomial() && k.lo() == -0.5 && k.pieces().size() == 1 && k.pieces()[0].size() == 1;
+}
+
+FilterGrid make_filter_grid(const Kernel& k, int width, int height) {
   FilterGrid g;
   g.width = width;
   g.height = height;
-  g.pieces = static_cast<int>(f.pieces.size());
-  g.degree1 = 1;
-  for (const auto& p : f.pieces) g.degree1 = std::max(g.degree1, static_cast<int>(p.size()));
+  g.pieces = static_cast<int>(k.pieces().size());
+  g.degree1 = k.degree() + 1;
   const int P = g.pieces, D = g.degree1;
-  double d = 0.5 - f.lo;
+  double d = 0.5 - k.lo();
   g.delta = d - std::floor(d);
   g.K = static_cast<int>(std::lround(d - g.delta)) - 1;
-  double integral = 0;
-  for (const auto& p : f.pieces)
-    for (std::size_t e = 0; e < p.size(); ++e) integral += p[e] / static_cast<double>(e + 1);
-  const double norm = 1.0 / integral;  // per axis
+  const double norm = 1.0 / k.integral();  // per axis
   g.b.assign(static_cast<std::size_t>(P * D), 0.0);
   // k on piece p in the local variable 1 - u: sum_e a_e (1 - u)^e = sum_m b_m u^m.
   for (int p = 0; p < P; ++p) {
-    const auto& a = f.pieces[static_cast<std::size_t>(p)];
+    const auto& a = k.pieces()[static_cast<std::size_t>(p)];
     for (int e = 0; e < static_cast<int>(a.size()); ++e) {
       double binom = 1;
       for (int m = 0; m <= e; ++m) {

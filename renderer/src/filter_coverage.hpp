@@ -31,7 +31,10 @@ struct FilterGrid {
   void rows_of(const Shape& s, int& row0, int& row1) const;
 };
 
-FilterGrid make_filter_grid(const PixelFilter& f, int width, int height);
+// A box kernel (one constant piece on [-1/2, 1/2)): pixel values are plain area coverage.
+bool exact_area(const Kernel& k);
+
+FilterGrid make_filter_grid(const Kernel& k, int width, int height);
 
 struct FilterScratch {
   std::vector<double> own, cover;  // per cell column: D*D own moments, D cover terms

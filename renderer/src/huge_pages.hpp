@@ -24,8 +24,8 @@ inline void advise_huge_pages(const void* data, std::size_t bytes) {
 }
 
 // reserve() that advises huge pages for the new, untouched storage.
-template <class T>
-void reserve_huge(std::vector<T>& v, std::size_t n) {
+template <class T, class A>
+void reserve_huge(std::vector<T, A>& v, std::size_t n) {
   if (v.capacity() >= n) return;
   v.reserve(n);
   advise_huge_pages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(T));

@@ -67,20 +67,20 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
 Image rasterize(const Scene& scene, int threads) {
   using namespace detail;
   const int W = scene.width(), H = scene.height();
-  Image img;
+  Image img(0, 0, 4);  // RGBA; the pixels, written once below, get huge-page advice first
   img.width = W;
   img.height = H;
-  reserve_huge(img.rgba, static_cast<std::size_t>(W) * H * 4);
-  img.rgba.resize(static_cast<std::size_t>(W) * H * 4);
+  reserve_huge(img.pixels, static_cast<std::size_t>(W) * H * 4);
+  img.pixels.resize(static_cast<std::size_t>(W) * H * 4);
   const Color bg = scene.background_;
-  for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
-    img.rgba[i] = bg.r * bg.a;
-    img.rgba[i + 1] = bg.g * bg.a;
-    img.rgba[i + 2] = bg.b * bg.a;
-    img.rgba[i + 3] = bg.a;
+  for (std::size_t i = 0; i < img.pixels.size(); i += 4) {
+    img.pixels[i] = bg.r * bg.a;
+    img.pixels[i + 1] = bg.g * bg.a;
+    img.pixels[i + 2] = bg.b * bg.a;
+    img.pixels[i + 3] = bg.a;
   }
 
-  const bool box = scene.filter_.kind == PixelFilter::Kind::Box;
+  const bool box = exact_area(scene.filter_);
   FilterGrid grid = box ? FilterGrid{} : make_filter_grid(scene.filter_, W, H);
   Box clip = box ? Box{0, 0, static_cast<double>(W), static_cast<double>(H)} : grid.clip;
   Vec2 shift = box ? Vec2{0, 0} : Vec2{grid.delta, grid.delta};

@@ -70,34 +70,14 @@ void check_style(const StrokeStyle& s, const char* call) {
 
 }  // namespace
 
-void validate(const PixelFilter& f) {
-  if (f.kind == PixelFilter::Kind::Box) return;
-  if (f.pieces.empty()) bad("pixel filter '" + f.name + "': no pieces");
-  if (!std::isfinite(f.lo)) bad("pixel filter '" + f.name + "': lo is not finite");
-  if (f.pieces.size() > 8) bad("pixel filter '" + f.name + "': support wider than 8 px");
-  double integral = 0;
-  for (const auto& p : f.pieces) {
-    if (p.empty() || p.size() > 8) bad("pixel filter '" + f.name + "': a piece needs 1 to 8 coefficients");
-    for (std::size_t e = 0; e < p.size(); ++e) {
-      if (!std::isfinite(p[e])) bad("pixel filter '" + f.name + "': coefficient is not finite");
-      integral += p[e] / static_cast<double>(e + 1);
-    }
-  }
-  if (!(std::abs(integral) > 1e-12)) bad("pixel filter '" + f.name + "': its integral is zero");
+void validate_pixel_filter(const Kernel& k) {
+  if (!k.polynomial()) bad("pixel filter '" + k.name() + "': not a piecewise polynomial");
+  if (k.pieces().size() > 8) bad("pixel filter '" + k.name() + "': support wider than 8 px");
+  if (k.degree() > 7) bad("pixel filter '" + k.name() + "': a piece needs 1 to 8 coefficients");
+  if (!(std::abs(k.integral()) > 1e-12)) bad("pixel filter '" + k.name() + "': its integral is zero");
 }
 
-PixelFilter PixelFilter::box() { return PixelFilter{}; }
-
-PixelFilter PixelFilter::tent() {
-  PixelFilter f;
-  f.kind = Kind::Piecewise;
-  f.lo = -1;
-  f.pieces = {{0.0, 1.0}, {1.0, -1.0}};
-  f.name = "tent";
-  return f;
-}
-
-Scene::Scene(int width, int height, Color background, PixelFilter filter)
+Scene::Scene(int width, int height, Color background, Kernel filter)
     : width_(width), height_(height), background_(background), filter_(std::move(filter)),
       items_(std::make_unique<std::vector<Item>>()) {
   if (width < 1 || height < 1) bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is empty");
@@ -105,7 +85,7 @@ Scene::Scene(int width, int height, Color background, PixelFilter filter)
   if (static_cast<long long>(width) * height > (1LL << 28))
     bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds 2^28 pixels");
   check_color(background, "Scene");
-  validate(filter_);
+  validate_pixel_filter(filter_);
 }
 
 Scene::Scene(Scene&&) noexcept = default;

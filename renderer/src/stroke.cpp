@@ -51,7 +51,6 @@ void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::v
     }
     return;
   }
-  const double theta = c == 0 ? -kPi : std::atan2(c, dt);  // signed turn from a to b
   const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1 + dt)));
   // The miter tip M lies on both outer offset lines, so A (on the line before M) and B (on the
   // line after it) are collinear outline vertices: the miter outline is just M. A round join
@@ -66,6 +65,7 @@ void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::v
   v.push_back(A);
   switch (style_.join) {
     case Join::Round: {
+      const double theta = c == 0 ? -kPi : std::atan2(c, dt);  // signed turn from a to b
       const double a0 = std::atan2(s * a.n.y, s * a.n.x);
       arc_interior(P, h, a0, theta, out_.clip(), [&](Vec2 q) { v.push_back(q); });
       break;

@@ -147,20 +147,20 @@ void parallel_for(long count, int threads, F&& work) {
 
 }  // namespace
 
-SampledKernel sampled_kernel(const Filter& f) {
-  for (double j = std::ceil(f.support.lo); j <= f.support.hi; j += 1)
-    if (std::abs(j) >= 2 && std::abs(evaluate(f, j)) > 1e-12)
-      throw std::invalid_argument("interpolating prefilter: filter " + f.spec + " is not zero at " +
+SampledKernel sampled_kernel(const Kernel& k) {
+  for (double j = std::ceil(k.support().lo); j <= k.support().hi; j += 1)
+    if (std::abs(j) >= 2 && std::abs(k(j)) > 1e-12)
+      throw std::invalid_argument("interpolating prefilter: filter " + k.name() + " is not zero at " +
                                   num(j) + "; only kernels sampled as k(-1), k(0), k(1) are supported");
-  const double km = evaluate(f, -1), k0 = evaluate(f, 0), kp = evaluate(f, 1);
+  const double km = k(-1), k0 = k(0), kp = k(1);
   const double sum = km + k0 + kp;
-  if (!(std::abs(sum) > 1e-12)) throw std::invalid_argument("interpolating prefilter: filter " + f.spec + " sums to zero at the integers");
+  if (!(std::abs(sum) > 1e-12)) throw std::invalid_argument("interpolating prefilter: filter " + k.name() + " sums to zero at the integers");
   SampledKernel h{km / sum, k0 / sum, kp / sum};
   std::complex<double> z1, z2;
   roots(h.right, h.centre, h.left, z1, z2);
   const double m1 = std::abs(z1), m2 = std::abs(z2);
   if (!(m1 < 1 - 1e-9 && m2 > 1 + 1e-9))
-    throw std::invalid_argument("interpolating prefilter: filter " + f.spec + " has no stable inverse: its samples (k(-1), k(0), k(1)) = (" +
+    throw std::invalid_argument("interpolating prefilter: filter " + k.name() + " has no stable inverse: its samples (k(-1), k(0), k(1)) = (" +
                                 num(km) + ", " + num(k0) + ", " + num(kp) + ") give roots of modulus " +
                                 num(m1) + " and " + num(m2) + ", not one inside and one outside the unit circle");
   return h;
@@ -171,8 +171,8 @@ void prefilter_line(float* p, long n, long stride, const SampledKernel& h, Edge 
   solve(make_solver(h, edge, n), p, stride, 1, tmp);
 }
 
-void prefilter(Image& img, const Filter& f, Edge edge, int threads) {
-  const SampledKernel h = sampled_kernel(f);
+void prefilter(Image& img, const Kernel& k, Edge edge, int threads) {
+  const SampledKernel h = sampled_kernel(k);
   if (h.left == 0 && h.right == 0) return;  // an interpolating kernel: the identity
   threads = resolve_threads(threads);
   const long C = img.channels, W = img.width, H = img.height;

@@ -6,6 +6,10 @@
 //     needs horizontally into a ring of rows (each once), and combines them vertically;
 //   vertical first: each output row combines whole source rows vertically into one extended
 //     row, which is then filtered horizontally (better when reducing).
+// The loops use the compiler's generic vector types, so they build on any architecture. Chosen
+// at compile time where available: on x86-64 each hot loop is also compiled for x86-64-v3 (AVX2)
+// and picked at load time, and very large outputs are written with SSE streaming stores; neither
+// changes a result (the same operations in the same order, only wider or stored differently).
 #include <splinefig/resample/prefilter.hpp>
 #include <splinefig/resample/resample.hpp>
 
@@ -13,9 +17,13 @@
 #include <atomic>
 #include <cstdint>
 #include <cstring>
-#include <xmmintrin.h>
 #include <limits>
 #include <thread>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#define SPLINEFIG_STREAMING_STORES 1
+#endif
 
 namespace splinefig {
 namespace {
@@ -23,7 +31,30 @@ namespace {
 typedef float v4 __attribute__((vector_size(16)));
 typedef float v8 __attribute__((vector_size(32)));
 
+#if defined(__x86_64__) && defined(__SSE__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
 #define SPLINEFIG_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+#endif
+#ifndef SPLINEFIG_CLONES
+#define SPLINEFIG_CLONES
+#endif
+
+// Non-temporal stores (they skip reading the destination into the cache first), where the
+// architecture has them; elsewhere ordinary stores.
+#ifdef SPLINEFIG_STREAMING_STORES
+constexpr bool kStreamingStores = true;
+inline void stream_store4(float* out, const float* v4f) {
+  __m128 v;
+  std::memcpy(&v, v4f, sizeof v);
+  _mm_stream_ps(out, v);
+}
+inline void stream_fence() { _mm_sfence(); }  // order the weakly ordered streaming stores
+#else
+constexpr bool kStreamingStores = false;
+inline void stream_store4(float* out, const float* v4f) { std::memcpy(out, v4f, 4 * sizeof(float)); }
+inline void stream_fence() {}
+#endif
 
 // out[i*C + c] = sum_t w[i*T + t] ext[(first[i] - lo + t)*C + c] for C = 3 or 4. `ext` has 4
 // floats of slack at its end; all but the last pixel are stored with one 4-wide store (for C = 3
@@ -129,8 +160,7 @@ void horizontal_any(const float* ext, const long* first, long lo, const float* w
 
 // out[k] = sum_t w[t] rows[t][k] for k < n (black rows already left out). Four 8-wide
 // accumulators stay in registers across the taps; `stream` writes the output with
-// non-temporal stores, which skip reading the destination into the cache first (worth it only
-// for outputs far larger than the cache).
+// non-temporal stores (worth it only for outputs far larger than the cache).
 SPLINEFIG_CLONES
 void vertical(const float* const* rows, const float* w, int taps, size_t n, float* __restrict out, bool stream) {
   size_t k = 0;
@@ -157,11 +187,7 @@ void vertical(const float* const* rows, const float* w, int taps, size_t n, floa
     }
     if (stream) {
       const v8 acc[4] = {a0, a1, a2, a3};
-      for (int q = 0; q < 8; ++q) {
-        __m128 v;
-        std::memcpy(&v, reinterpret_cast<const float*>(acc) + 4 * q, sizeof v);
-        _mm_stream_ps(out + k + 4 * q, v);
-      }
+      for (int q = 0; q < 8; ++q) stream_store4(out + k + 4 * q, reinterpret_cast<const float*>(acc) + 4 * q);
     } else {
       std::memcpy(out + k, &a0, sizeof a0);
       std::memcpy(out + k + 8, &a1, sizeof a1);
@@ -174,7 +200,7 @@ void vertical(const float* const* rows, const float* w, int taps, size_t n, floa
     for (int t = 0; t < taps; ++t) acc += w[t] * rows[t][k];
     out[k] = acc;
   }
-  if (stream) _mm_sfence();  // order the weakly ordered streaming stores before what follows
+  if (stream) stream_fence();
 }
 
 // Outputs [i0, i1) of the row, reading extended positions from `base`, which holds position
@@ -427,7 +453,7 @@ int resolve_threads(int threads) {
   return hw == 0 ? 1 : static_cast<int>(hw);
 }
 
-void resample_into(const Image& src_in, Image& dst, const Filter& f, const ResampleOptions& opt) {
+void resample_into(const Image& src_in, Image& dst, const Kernel& k, const ResampleOptions& opt) {
   if (src_in.width < 1 || src_in.height < 1 || src_in.channels < 1)
     throw std::invalid_argument("resample: the source image is empty");
   if (dst.width < 1 || dst.height < 1) throw std::invalid_argument("resample: the output size is zero");
@@ -441,12 +467,11 @@ void resample_into(const Image& src_in, Image& dst, const Filter& f, const Resam
   const Image* src = &src_in;
   if (opt.interpolating) {
     coefficients = src_in;
-    prefilter(coefficients, f, opt.edge, threads);
+    prefilter(coefficients, k, opt.edge, threads);
     src = &coefficients;
   }
-  Plan p{*src, dst, axis_weights(f, src->width, dst.width, opt.edge),
-         axis_weights(f, src->height, dst.height, opt.edge), opt.edge, src->channels,
-         dst.pixels.size() * sizeof(float) > (size_t(32) << 20), {}};
+  Plan p{*src, dst, axis_weights(k, src->width, dst.width), axis_weights(k, src->height, dst.height), opt.edge, src->channels,
+         kStreamingStores && dst.pixels.size() * sizeof(float) > (size_t(32) << 20), {}};
   p.split = split_row(p.ax, p.C);
   // Multiply-adds, in units of a 4-wide horizontal tap (see the top of this file).
   const double C = p.C, hx = p.ax.taps * (C <= 4 ? 1.0 : C / 4), vy = p.ay.taps * C / 8;
@@ -459,10 +484,11 @@ void resample_into(const Image& src_in, Image& dst, const Filter& f, const Resam
     vertical_first(p, threads);
 }
 
-Image resample(const Image& src, int width, int height, const Filter& f, const ResampleOptions& opt) {
+Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt) {
   if (width < 1 || height < 1) throw std::invalid_argument("resample: the output size is zero");
   Image dst(width, height, src.channels);
-  resample_into(src, dst, f, opt);
+  dst.copy_metadata_from(src);
+  resample_into(src, dst, k, opt);
   return dst;
 }
 

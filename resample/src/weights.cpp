@@ -40,8 +40,7 @@ long edge_index(long j, long size, Edge e) {
   return -1;
 }
 
-AxisWeights axis_weights(const Filter& f, int src, int dst, Edge edge) {
-  (void)edge;  // every mode keeps all taps in the sum; the mode only decides what they read
+AxisWeights axis_weights(const Kernel& k, int src, int dst) {
   AxisWeights ax;
   ax.src = src;
   ax.dst = dst;
@@ -53,18 +52,18 @@ AxisWeights axis_weights(const Filter& f, int src, int dst, Edge edge) {
     // x = (i + 1/2) S / D with one rounding: the numerator (2i+1) S is an exact integer.
     const double x = double((2 * static_cast<long long>(i) + 1) * src) / (2.0 * dst);
     // k((x - (j + 1/2)) / f) can be non-zero only for (x - (j+1/2))/f in [lo, hi).
-    long j0 = static_cast<long>(std::floor(x - f.support.hi * scale - 0.5));
-    long j1 = static_cast<long>(std::ceil(x - f.support.lo * scale - 0.5));
+    long j0 = static_cast<long>(std::floor(x - k.support().hi * scale - 0.5));
+    long j1 = static_cast<long>(std::ceil(x - k.support().lo * scale - 0.5));
     std::vector<double> w;
     double sum = 0, sumabs = 0;
     for (long j = j0; j <= j1; ++j) {
-      const double v = evaluate(f, (x - (double(j) + 0.5)) / scale);
+      const double v = k((x - (double(j) + 0.5)) / scale);
       w.push_back(v);
       sum += v;
       sumabs += std::abs(v);
     }
     if (!(std::abs(sum) > 1e-12 * sumabs) || !std::isfinite(sum))
-      throw std::invalid_argument("filter " + f.spec + ": its weights sum to zero at output pixel " +
+      throw std::invalid_argument("filter " + k.name() + ": its weights sum to zero at output pixel " +
                                   std::to_string(i));
     size_t a = 0, b = w.size();
     while (a + 1 < b && w[a] == 0) ++a;

@@ -1,5 +1,6 @@
 // The memo's basis matrices, its spec syntax, and the basis functions.
 #include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <array>
 #include <charconv>
@@ -67,6 +68,14 @@ Basis beta(double b1, double b2) {
                 6 * s3 / d, -3 * (b2 + 2 * s3 + 2 * s2) / d, 3 * (b2 + 2 * s2) / d, 0,         //
                 -6 * s3 / d, 6 * (s3 - b1) / d, 6 * b1 / d, 0,                                //
                 2 * s3 / d, (b2 + 4 * (s2 + b1)) / d, 2 / d, 0});
+}
+
+Basis mitchell_netravali_basis(double b, double c) {
+  return cubic("mitchell-netravali", "mitchell-netravali:b=" + fmt(b) + ",c=" + fmt(c),
+               {(-b - 6 * c) / 6, (12 - 9 * b - 6 * c) / 6, (-12 + 9 * b + 6 * c) / 6, (b + 6 * c) / 6,  //
+                (3 * b + 12 * c) / 6, (-18 + 12 * b + 6 * c) / 6, (18 - 15 * b - 12 * c) / 6, -c,         //
+                (-3 * b - 6 * c) / 6, 0, (3 * b + 6 * c) / 6, 0,                                         //
+                b / 6, (6 - 2 * b) / 6, b / 6, 0});
 }
 
 Basis uniform_bspline(int n) {
@@ -220,8 +229,15 @@ Basis parse_basis(std::string_view spec) {
       throw SpecError("uniform-bspline: degree=" + raw["degree"] + " is out of range (1..20)");
     return uniform_bspline(static_cast<int>(d));
   }
-  throw SpecError("unknown basis '" + std::string(name) +
-                  "' (known: catmull-rom, cardinal, bspline, tensioned-bspline, beta, uniform-bspline)");
+  if (name == "mitchell-netravali") {
+    take({{"b", 1.0 / 3}, {"c", 1.0 / 3}});
+    return mitchell_netravali_basis(params["b"], params["c"]);
+  }
+  throw SpecError("unknown basis '" + std::string(name) + "' (known: " + known_bases() + ")");
+}
+
+std::string known_bases() {
+  return "catmull-rom, cardinal, bspline, tensioned-bspline, beta, uniform-bspline, mitchell-netravali";
 }
 
 double basis_segment(const Basis& b, int c, double u) {
@@ -236,17 +252,6 @@ Support kernel_support(const Basis& b) {
   return {static_cast<double>(h - b.degree), static_cast<double>(h + 1)};
 }
 
-double kernel(const Basis& b, double s) {
-  const int n = b.degree;
-  const int h = (n - 1) / 2;
-  // Every family here is continuous at the ends of its support, so k = 0 there exactly
-  // (Horner at u = 1 would leave a rounding residue of the column sum).
-  if (!(s > h - n && s < h + 1)) return 0.0;
-  // Column c covers [h-c, h-c+1); the right end h+1 belongs to column 0.
-  int c = h - static_cast<int>(std::floor(s));
-  if (c < 0) c = 0;
-  if (c > n) c = n;
-  return basis_segment(b, c, s - (h - c));
-}
+double kernel(const Basis& b, double s) { return basis_kernel(b)(s); }
 
 }  // namespace splinefig

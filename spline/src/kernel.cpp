@@ -1,71 +1,35 @@
-// Kernel derivatives, integral and continuity class from the basis matrix's coefficients.
+// Basis functions as kernels, exactly from the matrix columns; the kernel spec parser.
 #include <splinefig/spline/kernel.hpp>
 
-#include <algorithm>
-#include <cmath>
+#include <string>
 
 namespace splinefig {
-namespace {
 
-double falling(int k, int m) {
-  double f = 1;
-  for (int t = 0; t < m; ++t) f *= k - t;
-  return f;
-}
-
-// d^m/du^m of basis segment (column) c at u; 0 for a column outside 0..degree.
-double column_derivative(const Basis& b, int c, double u, int m) {
-  if (c < 0 || c > b.degree) return 0;
+Kernel basis_kernel(const Basis& b) {
   const int n = b.degree;
-  double v = 0;
-  for (int r = 0; r <= n - m; ++r) v = v * u + falling(n - r, m) * b(r, c);
-  return v;
-}
-
-}  // namespace
-
-double kernel_derivative(const Basis& b, double s, int m) {
-  const int n = b.degree, h = (n - 1) / 2;
-  if (!(s >= h - n && s < h + 1)) return 0.0;
-  // Column c covers [h-c, h-c+1) (basis.hpp).
-  const int c = std::clamp(h - static_cast<int>(std::floor(s)), 0, n);
-  return column_derivative(b, c, s - (h - c), m);
-}
-
-double kernel_integral(const Basis& b) {
-  const int n = b.degree;
-  double sum = 0;
-  for (int r = 0; r <= n; ++r) {
-    double row = 0;
-    for (int c = 0; c <= n; ++c) row += b(r, c);
-    sum += row / (n - r + 1);  // integral of u^(n-r) over [0,1]
+  std::vector<std::vector<double>> pieces;
+  for (int p = 0; p <= n; ++p) {
+    std::vector<double> c;
+    for (int m = 0; m <= n; ++m) c.push_back(b(n - m, n - p));
+    pieces.push_back(std::move(c));
   }
-  return sum;
+  return Kernel::piecewise(b.spec, kernel_support(b).lo, std::move(pieces));
 }
 
-std::vector<double> kernel_jumps(const Basis& b, int m) {
-  const int n = b.degree;
-  std::vector<double> jumps;
-  // Knot j = h - c is the left end of column c and the right end of column c+1; c = n gives
-  // the support's left end, c = -1 its right end (columns outside 0..n are zero).
-  for (int c = n; c >= -1; --c) {
-    const double right = column_derivative(b, c, 0.0, m);
-    const double left = column_derivative(b, c + 1, 1.0, m);
-    jumps.push_back(right - left);
+Kernel parse_kernel(std::string_view spec) {
+  if (spec == "box") return Kernel::box();
+  if (spec == "tent") return Kernel::tent();
+  if (spec == "lanczos3") return Kernel::lanczos(3);
+  if (spec.substr(0, spec.find(':')).empty()) throw SpecError("empty filter name");
+  try {
+    return basis_kernel(parse_basis(spec));
+  } catch (const SpecError& e) {
+    const std::string what = e.what();
+    if (what.rfind("unknown basis", 0) == 0)
+      throw SpecError("unknown filter '" + std::string(spec.substr(0, spec.find(':'))) +
+                      "' (known: box, tent, lanczos3 and the bases " + known_bases() + ")");
+    throw;
   }
-  return jumps;
-}
-
-int kernel_continuity(const Basis& b, double tolerance) {
-  const int n = b.degree;
-  for (int m = 0; m <= n; ++m) {
-    double scale = 0;
-    for (int c = 0; c <= n; ++c)
-      scale = std::max({scale, std::abs(column_derivative(b, c, 0.0, m)), std::abs(column_derivative(b, c, 1.0, m))});
-    for (double j : kernel_jumps(b, m))
-      if (std::abs(j) > tolerance * std::max(scale, 1e-300)) return m - 1;
-  }
-  return n;
 }
 
 }  // namespace splinefig

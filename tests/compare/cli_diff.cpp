@@ -2,13 +2,13 @@
 // --flip, and bad flags or outputs (a one-line message, non-zero exit, no partial file).
 #include "support.hpp"
 
-#include <splinefig/compare/io.hpp>
+#include <splinefig/image/io.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 
-using namespace splinefig::compare;
+using namespace splinefig;
 using namespace test_support;
 namespace fs = std::filesystem;
 
@@ -54,7 +54,7 @@ TEST_CASE("diff --diff-image and --triptych write pictures of the difference") {
   fs::remove(t);
   const Run r = run_splinefig("diff --diff-image " + q(d) + " --triptych " + q(t) + " --scale 4 " + q(a) + " " + q(b));
   CHECK(r.code == 2);
-  const Image di = load_image(d), ti = load_image(t);
+  const Image di = read_image(d), ti = read_image(t);
   CHECK(di.width == 20);
   CHECK(di.at(13, 5, 0) == Approx(std::lround(4.0 * 40.0) / 255.0).epsilon(1e-6));  // |a-b| * 4
   CHECK(di.at(2, 2, 1) == 0.0f);

@@ -6,7 +6,7 @@
 #include "support.hpp"
 
 #include <splinefig/compare/compare.hpp>
-#include <splinefig/compare/io.hpp>
+#include <splinefig/image/io.hpp>
 #include <splinefig/compare/report.hpp>
 
 #include <catch2/catch.hpp>
@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 
+using namespace splinefig;
 using namespace splinefig::compare;
 using namespace test_support;
 
@@ -61,7 +62,7 @@ TEST_CASE("identical images: zero error, infinite PSNR, PASS and exit 0") {
   std::vector<float> v(16 * 12 * 3);
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = float(i % 256) / 255.0f;
   write_raw(a, 16, 12, 3, v, OIIO::TypeUInt8);
-  const Image im = load_image(a);
+  const Image im = read_image(a);
   const Metrics m = idiff_metrics(im, im, 1e-6f, 1e-6f);
   CHECK(m.mean_error == 0.0);
   CHECK(m.rms_error == 0.0);
@@ -83,7 +84,7 @@ TEST_CASE("a few far-off pixels: hand-derived numbers and the verdict thresholds
   for (int p : {5 * 32 + 7, 9 * 32 + 2, 20 * 32 + 31}) vb[std::size_t(p * 3)] = 1.5f;
   write_raw(a, 32, 32, 3, va, OIIO::TypeFloat);
   write_raw(b, 32, 32, 3, vb, OIIO::TypeFloat);
-  const Metrics m = idiff_metrics(load_image(a), load_image(b), 1e-6f, 1e-6f);
+  const Metrics m = idiff_metrics(read_image(a), read_image(b), 1e-6f, 1e-6f);
   CHECK(m.mean_error == 3.0 / 3072.0);
   CHECK(m.rms_error == Approx(std::sqrt(3.0 / 3072.0)).epsilon(1e-15));  // 0.03125
   CHECK(m.psnr == Approx(20.0 * std::log10(1.5 / 0.03125)).epsilon(1e-12));  // maxval = 1.5
@@ -105,7 +106,7 @@ TEST_CASE("a few far-off pixels: hand-derived numbers and the verdict thresholds
                  "  3 pixels (0.293%) over 1e-06\n"
                  "FAILURE\n");
   // The verdict thresholds, through the library; idiff (exit code only) as the peer.
-  const Image ia = load_image(a), ib = load_image(b);
+  const Image ia = read_image(a), ib = read_image(b);
   auto verdict = [&](const std::string& flags, Thresholds t) {
     const Verdict v = idiff_verdict(idiff_metrics(ia, ib, t.fail, t.warn), t);
     if (have_idiff()) {
@@ -161,7 +162,7 @@ TEST_CASE("noise under the thresholds passes, and idiff's mean and RMS from an i
     sumsq += double(f) * f;
     mx = std::max(mx, f);
   }
-  const Metrics m = idiff_metrics(load_image(a), load_image(b), 0.001f, 0.001f);
+  const Metrics m = idiff_metrics(read_image(a), read_image(b), 0.001f, 0.001f);
   CHECK(m.mean_error == Approx(sum / double(va.size())).epsilon(1e-12));
   CHECK(m.rms_error == Approx(std::sqrt(sumsq / double(va.size()))).epsilon(1e-12));
   CHECK(m.max_error == mx);
@@ -201,7 +202,7 @@ TEST_CASE("a uniform shift of every value by 1/4") {
   }
   write_raw(a, 24, 16, 4, va, OIIO::TypeFloat);
   write_raw(b, 24, 16, 4, vb, OIIO::TypeFloat);
-  const Metrics m = idiff_metrics(load_image(a), load_image(b), 1e-6f, 1e-6f);
+  const Metrics m = idiff_metrics(read_image(a), read_image(b), 1e-6f, 1e-6f);
   CHECK(m.mean_error == 0.25);
   CHECK(m.rms_error == 0.25);
   CHECK(m.psnr == Approx(20.0 * std::log10((63.0 / 64.0 + 0.25) / 0.25)).epsilon(1e-12));
@@ -219,7 +220,7 @@ TEST_CASE("different sizes: the union of the windows, missing pixels black, fail
   const std::string a = scratch("size_a.png"), b = scratch("size_b.png");
   write_raw(a, 8, 8, 3, filled(8, 8, 3, 128.0f / 255.0f), OIIO::TypeUInt8);
   write_raw(b, 10, 6, 3, filled(10, 6, 3, 128.0f / 255.0f), OIIO::TypeUInt8);
-  const Image ia = load_image(a), ib = load_image(b);
+  const Image ia = read_image(a), ib = read_image(b);
   const double v = ia.at(0, 0, 0);
   const Metrics m = idiff_metrics(ia, ib, 1e-6f, 1e-6f);
   CHECK(m.nfail == 28);
@@ -245,7 +246,7 @@ TEST_CASE("different channel counts: missing channels are 0") {
   std::vector<float> vb = filled(6, 5, 4, 0.5f);
   for (std::size_t p = 0; p < 30; ++p) vb[p * 4 + 3] = 1.0f;
   write_raw(b, 6, 5, 4, vb, OIIO::TypeFloat);
-  const Metrics m = idiff_metrics(load_image(a), load_image(b), 1e-6f, 1e-6f);
+  const Metrics m = idiff_metrics(read_image(a), read_image(b), 1e-6f, 1e-6f);
   CHECK(m.mean_error == 0.25);
   CHECK(m.rms_error == 0.5);
   CHECK(m.psnr == Approx(20.0 * std::log10(2.0)).epsilon(1e-12));
@@ -274,15 +275,15 @@ TEST_CASE("NaN matches NaN, Inf matches Inf, other non-finite pairs are an infin
   write_raw(b, 4, 4, 1, vb, OIIO::TypeFloat);
   write_raw(c, 4, 4, 1, vc, OIIO::TypeFloat);
   write_raw(d, 4, 4, 1, vd, OIIO::TypeFloat);
-  const Metrics same = idiff_metrics(load_image(a), load_image(b), 1e-6f, 1e-6f);
+  const Metrics same = idiff_metrics(read_image(a), read_image(b), 1e-6f, 1e-6f);
   CHECK(same.max_error == 0.0f);
   CHECK(same.mean_error == 0.0);
-  const Metrics m = idiff_metrics(load_image(a), load_image(c), 1e-6f, 1e-6f);
+  const Metrics m = idiff_metrics(read_image(a), read_image(c), 1e-6f, 1e-6f);
   CHECK(std::isinf(m.max_error));
   CHECK(m.max_x == 3);
   CHECK(m.nfail == 0);
   CHECK(m.mean_error == 0.0);
-  const Metrics n = idiff_metrics(load_image(a), load_image(d), 1e-6f, 1e-6f);
+  const Metrics n = idiff_metrics(read_image(a), read_image(d), 1e-6f, 1e-6f);
   CHECK(std::isnan(n.mean_error));
   CHECK(n.max_error == 1.0f);
   CHECK(n.max_x == 2);

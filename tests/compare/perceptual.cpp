@@ -3,11 +3,13 @@
 // structural_similarity for SSIM; a direct numpy transcription of the FLIP paper with full
 // 2-D kernels for FLIP), run during development on the same analytic patterns as below.
 #include <splinefig/compare/perceptual.hpp>
+#include <splinefig/image/srgb.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
+using namespace splinefig;
 using namespace splinefig::compare;
 
 namespace {

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+using namespace splinefig;
 using namespace splinefig::compare;
 
 namespace {

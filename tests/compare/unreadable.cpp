@@ -2,12 +2,12 @@
 // file, exit code 4, never a comparison of garbage and never a crash.
 #include "support.hpp"
 
-#include <splinefig/compare/io.hpp>
+#include <splinefig/image/io.hpp>
 
 #include <catch2/catch.hpp>
 #include <zlib.h>
 
-using namespace splinefig::compare;
+using namespace splinefig;
 using namespace test_support;
 
 namespace {
@@ -51,7 +51,7 @@ void check_unreadable(const std::string& good, const std::string& bad) {
   CHECK(r.err.find(bad) != std::string::npos);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   CHECK(r.out.find("PASS") == std::string::npos);
-  CHECK_THROWS_AS(load_image(bad), UnreadableImage);
+  CHECK_THROWS_AS(read_image(bad), UnreadableImage);
 }
 
 }  // namespace
@@ -59,7 +59,7 @@ void check_unreadable(const std::string& good, const std::string& bad) {
 TEST_CASE("a complete hand-made PNG loads with OpenImageIO's values") {
   const std::string good = scratch("hand_good.png");
   write_bytes(good, grey_png(8));
-  const Image im = load_image(good);
+  const Image im = read_image(good);
   CHECK(im.width == 8);
   CHECK(im.channels == 1);
   CHECK(im.at(3, 5, 0) == Approx(96.0 / 255.0).epsilon(1e-7));

@@ -50,3 +50,60 @@ TEST_CASE("splinefig figures --specs: good specs render, a bad one is reported a
   CHECK(index["figures"][0]["width"].number == 64);
   CHECK(index["figures"][0]["axes"].size() == 0);
 }
+
+TEST_CASE("splinefig figures --only updates its entries in index.json and index.html and keeps the others") {
+  auto dir = scratch("figures-only-index");
+  fs::create_directories(dir / "specs");
+  auto write_spec = [&](const std::string& name, const std::string& title, int width) {
+    std::ofstream(dir / "specs" / (name + ".toml"))
+        << "title = \"" << title << "\"\n[canvas]\nwidth = " << width << "\nheight = 40\n"
+        << "[[polyline]]\npoints = [[4, 4], [40, 36]]\n";
+  };
+  write_spec("one", "One", 48);
+  write_spec("two", "Two", 56);
+  write_spec("three", "Three", 64);
+  const std::string base = exe() + " figures --specs " + (dir / "specs").string() + " --out " + (dir / "out").string();
+  auto r = run(base);
+  REQUIRE(r.code == 0);
+  // Only "two" again, after its spec changed: its entry changes, the others stay as they were.
+  write_spec("two", "Two again", 60);
+  r = run(base + " --only two");
+  REQUIRE(r.code == 0);
+  CHECK(r.out.find("1 figure in") != std::string::npos);
+  Json index = parse_json(read_file(dir / "out" / "index.json"));
+  REQUIRE(index["figures"].size() == 3);
+  CHECK(index["figures"][0]["name"].string == "one");
+  CHECK(index["figures"][0]["width"].number == 48);
+  CHECK(index["figures"][0]["title"].string == "One");
+  CHECK(index["figures"][1]["name"].string == "three");
+  CHECK(index["figures"][2]["name"].string == "two");
+  CHECK(index["figures"][2]["title"].string == "Two again");
+  CHECK(index["figures"][2]["width"].number == 60);
+  REQUIRE(index["figures"][0]["files"].size() == 1);
+  CHECK(index["figures"][0]["files"][0].string == "one.png");
+  const std::string html = read_file(dir / "out" / "index.html");
+  for (const char* id : {"id=\"one\"", "id=\"two\"", "id=\"three\"", "Two again"}) {
+    INFO(id);
+    CHECK(html.find(id) != std::string::npos);
+  }
+  // A whole run writes the index afresh: a spec that is gone leaves it.
+  fs::remove(dir / "specs" / "three.toml");
+  r = run(base);
+  REQUIRE(r.code == 0);
+  index = parse_json(read_file(dir / "out" / "index.json"));
+  CHECK(index["figures"].size() == 2);
+}
+
+TEST_CASE("splinefig figures --only with an unreadable index.json writes a new one and says so") {
+  auto dir = scratch("figures-only-bad-index");
+  fs::create_directories(dir / "specs");
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "specs" / "one.toml") << "[canvas]\nwidth = 32\nheight = 32\n";
+  std::ofstream(dir / "out" / "index.json") << "{\"figures\": [ {\"name\": ";
+  auto r = run(exe() + " figures --specs " + (dir / "specs").string() + " --out " + (dir / "out").string() + " --only one");
+  CHECK(r.code == 0);
+  CHECK(r.out.find("index.json") != std::string::npos);
+  Json index = parse_json(read_file(dir / "out" / "index.json"));
+  REQUIRE(index["figures"].size() == 1);
+  CHECK(index["figures"][0]["name"].string == "one");
+}

@@ -6,7 +6,6 @@
 #include "support.hpp"
 
 #include <splinefig/figures/figure.hpp>
-#include <splinefig/testing.hpp>
 
 using namespace figtest;
 
@@ -38,21 +37,6 @@ Rendered render(const std::string& name) {
 bool on(const Rendered& f, double x, double y, const char* color, double at_least = 0.5) {
   const AxesMap m = f.map();
   return near_share(f.png, m.px(x), m.py(y), hex(color)) > at_least;
-}
-
-// The same tolerance as the memo figures' references (tests/figures/references.cpp): a channel
-// off by more than 0.1 fails a pixel, and at most 0.01% of the pixels may fail.
-void check_reference(const std::string& name) {
-  const std::string src = SPLINEFIG_SOURCE_DIR;
-  splinefig::figures::FigureSpec spec = splinefig::figures::load_spec(src + "/figures/specs/" + name + ".toml");
-  splinefig::figures::RenderedFigure r = splinefig::figures::render_figure(spec, {1, 0});
-  auto img = splinefig::compare::Image::from_linear_rgba(r.image.width, r.image.height, r.image.rgba.data());
-  splinefig::testing::Tolerance tol;
-  tol.fail = 0.1f;
-  tol.failpercent = 0.01f;
-  tol.warn = 0.02f;
-  tol.warnpercent = 0.1f;
-  CHECK_THAT(img, splinefig::testing::MatchesReference(src + "/tests/reference/figures/" + name + ".png", tol));
 }
 
 }  // namespace
@@ -125,11 +109,3 @@ TEST_CASE("companion figures show their documented checks") {
   }
 }
 
-// Every companion figure against its reference PNG (regenerate with
-// SPLINEFIG_UPDATE_REFERENCES=1 and look at each changed image before committing it).
-TEST_CASE("the companion figures match their references") {
-  for (const char* name : {"s003-fig01", "s003-fig02", "s003-fig03", "s003-fig04", "s003-fig05", "s003-fig06", "s003-fig07", "s003-fig08", "s003-fig09", "s003-fig10", "s003-fig11", "s003-fig12", "s003-fig13", "s003-fig14", "s003-fig16", "s003-fig17", "s002-fig474", "local-betas"}) {
-    INFO("figure " << name);
-    check_reference(name);
-  }
-}

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/image/srgb.hpp>
 
 #include <cmath>
 
@@ -18,7 +19,7 @@ struct Rendered {
   std::array<int, 3> srgb(double x, double y) const {
     const float* p = r.image.pixel(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)));
     std::array<int, 3> out{};
-    for (int k = 0; k < 3; ++k) out[k] = static_cast<int>(std::lround(255 * render::linear_to_srgb(p[k])));
+    for (int k = 0; k < 3; ++k) out[k] = static_cast<int>(std::lround(255 * splinefig::linear_to_srgb(p[k])));
     return out;
   }
   Vec2 at(size_t axes, double x, double y) const {
@@ -32,7 +33,7 @@ Rendered render_elements() {
   return {render_figure(spec, {1, 2})};
 }
 
-int srgb8(double linear) { return static_cast<int>(std::lround(255 * render::linear_to_srgb(static_cast<float>(linear)))); }
+int srgb8(double linear) { return static_cast<int>(std::lround(255 * splinefig::linear_to_srgb(static_cast<float>(linear)))); }
 
 bool near(std::array<int, 3> a, std::array<int, 3> b, int tol = 2) {
   return std::abs(a[0] - b[0]) <= tol && std::abs(a[1] - b[1]) <= tol && std::abs(a[2] - b[2]) <= tol;
@@ -45,7 +46,7 @@ TEST_CASE("elements: fills blend in linear light, images land on their extent") 
   REQUIRE(f.r.info.axes.size() == 4);
   // Fill #2ca02c at alpha 0x80/255 over white, blended in linear light.
   const double a = 128.0 / 255;
-  auto lin = [](int v) { return static_cast<double>(render::srgb_to_linear(v / 255.0f)); };
+  auto lin = [](int v) { return static_cast<double>(splinefig::srgb_to_linear(v / 255.0f)); };
   std::array<int, 3> expected{srgb8(a * lin(0x2c) + (1 - a)), srgb8(a * lin(0xa0) + (1 - a)), srgb8(a * lin(0x2c) + (1 - a))};
   Vec2 q = f.at(0, 1.3, 0.7);
   CHECK(near(f.srgb(q.x, q.y), expected));

@@ -35,7 +35,7 @@ RenderedFigure bias_curve_alone(const std::string& basis) {
 }
 
 // Coverage of black over white in the pixel: 1 - luminance (linear, premultiplied, opaque).
-double ink(const render::Image& im, int x, int y) { return 1.0 - im.pixel(x, y)[1]; }
+double ink(const Image& im, int x, int y) { return 1.0 - im.pixel(x, y)[1]; }
 
 }  // namespace
 

@@ -14,7 +14,7 @@ using namespace splinefig::figures;
 namespace {
 
 // Black rectangle x in [10, 30], y in [0, 40] on white, 40 x 40, through `filter`.
-render::Image edge_image(const std::string& filter) {
+Image edge_image(const std::string& filter) {
   FigureSpec spec = parse_spec("[canvas]\nwidth = 40\nheight = 40\nfilter = \"" + filter +
                                    "\"\n[[polygon]]\npoints = [[10, -10], [30, -10], [30, 50], [10, 50]]\n"
                                    "color = \"#000000\"\n",
@@ -38,7 +38,7 @@ double integral(const Basis& b, double a, double c) {
 }  // namespace
 
 TEST_CASE("canvas filter bspline: an edge is the kernel's tail integral") {
-  render::Image im = edge_image("bspline");
+  Image im = edge_image("bspline");
   // Pixel 9 (centre 9.5) sees the rectangle x >= 10 through k(9.5 - x): the part s <= -0.5,
   // integral_{0.5}^{2} k = 1/2 - integral_0^{0.5} (4 - 6 s^2 + 3 s^3)/6 = 1/2 - 1.796875/6.
   const double covered = 0.5 - 1.796875 / 6;
@@ -50,7 +50,7 @@ TEST_CASE("canvas filter bspline: an edge is the kernel's tail integral") {
 
 TEST_CASE("canvas filter with an asymmetric Beta-spline kernel keeps its orientation") {
   const Basis b = parse_basis("beta:b1=2,b2=0");
-  render::Image im = edge_image("beta:b1=2,b2=0");
+  Image im = edge_image("beta:b1=2,b2=0");
   // V(c) = integral over the shape of k(c - x): for x >= 10 that is integral_{-inf}^{c-10} k.
   for (int px : {8, 9, 10, 11, 28, 29, 30, 31}) {
     const double c = px + 0.5;

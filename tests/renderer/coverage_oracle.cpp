@@ -169,3 +169,26 @@ TEST_CASE("hairlines keep their exact area: a 0.1 px line covers 0.1 of each pix
   for (double c : cov) total += c;
   CHECK(total == Approx(1.6).margin(1e-9));
 }
+
+TEST_CASE("self-overlapping strokes that leave the canvas are covered exactly up to its edges") {
+  // Outside the canvas the outline is projected onto the canvas's sides, so pieces of it run
+  // along a side together and then leave it: those are changes of order for the scan converter.
+  std::mt19937_64 rng(4213);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Case> cases;
+  for (int k = 0; k < 48; ++k) {
+    Case c;
+    c.join = k % 3;
+    c.width = 0.5 + 2.5 * u(rng);
+    const int side = k % 4;
+    oracle::P2 q{side == 0 ? 2.0 : side == 1 ? 30.0 : 16.0, side == 2 ? 2.0 : side == 3 ? 30.0 : 16.0};
+    if (side < 2) q.y = 4 + 24 * u(rng); else q.x = 4 + 24 * u(rng);
+    for (int i = 0; i < 60; ++i) {
+      c.pts.push_back(q);
+      const double a = 2 * oracle::kPi * u(rng);
+      q = {q.x + 3 * std::cos(a), q.y + 3 * std::sin(a)};
+    }
+    cases.push_back(c);
+  }
+  run_cases(cases, 32, 32);
+}

@@ -28,7 +28,7 @@ double gauss16(F f, double a, double b) {
   return s * r;
 }
 
-struct Kernel {
+struct RefKernel {  // the oracle's own piecewise polynomial, independent of kernel/
   double lo;
   std::vector<std::vector<double>> pieces;
   double operator()(double t) const {
@@ -50,7 +50,7 @@ struct Kernel {
   }
 };
 
-double filtered_value(const std::vector<oracle::Poly>& shape, const Kernel& k, double cx, double cy) {
+double filtered_value(const std::vector<oracle::Poly>& shape, const RefKernel& k, double cx, double cy) {
   // value = integral over the shape of k(cx - x) k(cy - y) dx dy / (integral k)^2
   std::vector<double> xs;
   for (std::size_t p = 0; p <= k.pieces.size(); ++p) xs.push_back(cx - (k.lo + p));
@@ -110,22 +110,15 @@ double filtered_value(const std::vector<oracle::Poly>& shape, const Kernel& k, d
   return v / (norm * norm);
 }
 
-sr::PixelFilter to_filter(const Kernel& k, const char* name) {
-  sr::PixelFilter f;
-  f.kind = sr::PixelFilter::Kind::Piecewise;
-  f.lo = k.lo;
-  f.pieces = k.pieces;
-  f.name = name;
-  return f;
-}
+splinefig::Kernel to_filter(const RefKernel& k, const char* name) { return splinefig::Kernel::piecewise(name, k.lo, k.pieces); }
 
-const Kernel kTent{-1, {{0, 1}, {1, -1}}};
-const Kernel kBSpline{-2, {{0, 0, 0, 1.0 / 6}, {1.0 / 6, 0.5, 0.5, -0.5}, {4.0 / 6, 0, -1, 0.5}, {1.0 / 6, -0.5, 0.5, -1.0 / 6}}};
+const RefKernel kTent{-1, {{0, 1}, {1, -1}}};
+const RefKernel kBSpline{-2, {{0, 0, 0, 1.0 / 6}, {1.0 / 6, 0.5, 0.5, -0.5}, {4.0 / 6, 0, -1, 0.5}, {1.0 / 6, -0.5, 0.5, -1.0 / 6}}};
 // Catmull-Rom (negative lobes) and a lopsided kernel that pins the convolution's orientation.
-const Kernel kCatmullRom{-2, {{0, 0, -0.5, 0.5}, {0, 0.5, 2, -1.5}, {1, 0, -2.5, 1.5}, {0, -0.5, 1, -0.5}}};
-const Kernel kLopsided{-0.75, {{1, 2}, {0.5, -0.5}, {0.25}}};
+const RefKernel kCatmullRom{-2, {{0, 0, -0.5, 0.5}, {0, 0.5, 2, -1.5}, {1, 0, -2.5, 1.5}, {0, -0.5, 1, -0.5}}};
+const RefKernel kLopsided{-0.75, {{1, 2}, {0.5, -0.5}, {0.25}}};
 
-void check_kernel(const Kernel& k, const char* name) {
+void check_kernel(const RefKernel& k, const char* name) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
   for (int rep = 0; rep < 3; ++rep) {
@@ -170,9 +163,9 @@ TEST_CASE("cubic B-spline filter: exact convolution") { check_kernel(kBSpline, "
 TEST_CASE("Catmull-Rom filter (negative lobes): exact convolution") { check_kernel(kCatmullRom, "catmull-rom"); }
 TEST_CASE("an asymmetric filter convolves (k(c - x)), it does not correlate") { check_kernel(kLopsided, "lopsided"); }
 
-TEST_CASE("PixelFilter::tent is the linear B-spline and a solid fill under it gives 1") {
-  auto f = sr::PixelFilter::tent();
-  REQUIRE(f.kind == sr::PixelFilter::Kind::Piecewise);
+TEST_CASE("Kernel::tent is the linear B-spline and a solid fill under it gives 1") {
+  auto f = splinefig::Kernel::tent();
+  REQUIRE(f.pieces().size() == 2);
   sr::Scene s(8, 8, {0, 0, 0, 0}, f);
   s.fill_polygon({{{-5, -5}, {20, -5}, {20, 20}, {-5, 20}}}, sr::FillRule::NonZero, {1, 1, 1, 1});
   auto img = sr::rasterize(s, 1);
@@ -181,12 +174,12 @@ TEST_CASE("PixelFilter::tent is the linear B-spline and a solid fill under it gi
 }
 
 TEST_CASE("a bad pixel filter is rejected with a message naming it") {
-  sr::PixelFilter f;
-  f.kind = sr::PixelFilter::Kind::Piecewise;
-  f.name = "empty";
-  REQUIRE_THROWS_WITH(sr::Scene(8, 8, {}, f), Catch::Contains("empty"));
-  f.pieces = {{NAN}};
-  REQUIRE_THROWS_AS(sr::Scene(8, 8, {}, f), std::invalid_argument);
-  f.pieces = {{1, -2}};  // integral zero
-  REQUIRE_THROWS_WITH(sr::Scene(8, 8, {}, f), Catch::Contains("integral"));
+  using splinefig::Kernel;
+  REQUIRE_THROWS_WITH(Kernel::piecewise("empty", -0.5, {}), Catch::Contains("empty"));
+  REQUIRE_THROWS_AS(Kernel::piecewise("nan", -0.5, {{NAN}}), std::invalid_argument);
+  // integral zero
+  REQUIRE_THROWS_WITH(sr::Scene(8, 8, {}, Kernel::piecewise("flat", -0.5, {{1, -2}})), Catch::Contains("'flat': its integral"));
+  REQUIRE_THROWS_WITH(sr::Scene(8, 8, {}, Kernel::lanczos(3)), Catch::Contains("'lanczos3': not a piecewise polynomial"));
+  REQUIRE_THROWS_WITH(sr::Scene(8, 8, {}, Kernel::piecewise("wide", -5, std::vector<std::vector<double>>(9, {1.0}))),
+                      Catch::Contains("wider than 8"));
 }

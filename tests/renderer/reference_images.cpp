@@ -1,71 +1,27 @@
 // One small reference picture per drawing feature (tests/reference/renderer/*.png), each looked
-// at before it was kept. The test renders the scene again, writes it as PNG and compares the
-// 8-bit pixels: at most 2/255 per channel anywhere (text: FreeType versions may differ, so a
-// mean of 1/255 and a max of 96/255). SPLINEFIG_UPDATE_REFERENCES=1 rewrites the references.
+// at before it was kept, checked with the suite's one reference check (tests/reference_check.hpp:
+// no channel off by more than 2/255; with text, 0.01% of the pixels may be). Regenerate with
+// SPLINEFIG_UPDATE_REFERENCES=1 and look at every changed image before committing it.
+#include "reference_check.hpp"
+
 #include <splinefig/renderer/renderer.hpp>
 
 #include <catch2/catch.hpp>
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
 #include <functional>
 
 namespace sr = splinefig::render;
-namespace fs = std::filesystem;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 const sr::Color kInk{0.02f, 0.02f, 0.05f, 1};
 
-std::vector<unsigned char> read_png(const std::string& path, int& w, int& h) {
-  OIIO::ImageSpec raw;
-  raw.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &raw);
-  if (!in) return {};
-  w = in->spec().width;
-  h = in->spec().height;
-  std::vector<unsigned char> px(static_cast<std::size_t>(w) * h * 4);
-  if (in->spec().nchannels != 4 || !in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, px.data())) return {};
-  return px;
-}
-
 void check_reference(const std::string& name, sr::Scene& scene, bool text = false) {
-  const fs::path ref = fs::path(SPLINEFIG_SOURCE_DIR) / "tests/reference/renderer" / (name + ".png");
-  auto img = sr::rasterize(scene, 2);
-  if (std::getenv("SPLINEFIG_UPDATE_REFERENCES")) {
-    sr::write_image(img, ref.string(), {"splinefig", "renderer reference: " + name});
-    SUCCEED("rewrote " << ref);
-    return;
-  }
-  const fs::path out = fs::temp_directory_path() / ("splinefig-ref-" + std::to_string(::getpid()) + "-" + name + ".png");
-  sr::write_image(img, out.string());
-  int w = 0, h = 0, rw = 0, rh = 0;
-  auto got = read_png(out.string(), w, h);
-  auto want = read_png(ref.string(), rw, rh);
-  fs::remove(out);
-  INFO("reference " << ref);
-  REQUIRE(!want.empty());
-  REQUIRE(rw == w);
-  REQUIRE(rh == h);
-  int worst = 0;
-  double sum = 0;
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    int d = std::abs(int(got[i]) - int(want[i]));
-    worst = std::max(worst, d);
-    sum += d;
-  }
-  const double mean = sum / static_cast<double>(got.size());
-  INFO("max difference " << worst << "/255, mean " << mean);
-  if (text) {
-    CHECK(worst <= 96);
-    CHECK(mean <= 1.0);
-  } else {
-    CHECK(worst <= 2);
-  }
+  const splinefig::Image img = sr::rasterize(scene, 2);
+  CHECK_THAT(img, splinefig::testing::MatchesReference(reference_check::path("renderer/" + name + ".png"),
+                                                       text ? reference_check::figure() : reference_check::drawing()));
 }
 
 sr::StrokeStyle style(double width, sr::Join j = sr::Join::Miter, sr::Cap c = sr::Cap::Butt) {
@@ -157,13 +113,10 @@ TEST_CASE("reference: markers and disks") {
 }
 
 TEST_CASE("reference: the same shapes under box, tent and cubic B-spline pixel filters") {
-  sr::PixelFilter bspline;
-  bspline.kind = sr::PixelFilter::Kind::Piecewise;
-  bspline.lo = -2;
-  bspline.pieces = {{0, 0, 0, 1.0 / 6}, {1.0 / 6, 0.5, 0.5, -0.5}, {4.0 / 6, 0, -1, 0.5}, {1.0 / 6, -0.5, 0.5, -1.0 / 6}};
-  bspline.name = "bspline";
+  const auto bspline = splinefig::Kernel::piecewise(
+      "bspline", -2, {{0, 0, 0, 1.0 / 6}, {1.0 / 6, 0.5, 0.5, -0.5}, {4.0 / 6, 0, -1, 0.5}, {1.0 / 6, -0.5, 0.5, -1.0 / 6}});
   int i = 0;
-  for (auto f : {sr::PixelFilter::box(), sr::PixelFilter::tent(), bspline}) {
+  for (const auto& f : {splinefig::Kernel::box(), splinefig::Kernel::tent(), bspline}) {
     sr::Scene s(64, 64, {1, 1, 1, 1}, f);
     s.stroke_polyline(std::vector<sr::Vec2>{{8, 56}, {20, 8}, {32, 56}, {56, 20}}, false, style(2.5, sr::Join::Round), kInk);
     s.fill_circle({44, 46}, 8, {0.8f, 0.1f, 0.1f, 1});

@@ -13,7 +13,7 @@ namespace sr = splinefig::render;
 
 namespace {
 
-sr::Scene busy_scene(sr::PixelFilter filter) {
+sr::Scene busy_scene(splinefig::Kernel filter) {
   sr::Scene s(150, 130, {1, 1, 1, 1}, filter);
   std::vector<sr::Vec2> curve;
   for (int k = 0; k <= 20000; ++k) {
@@ -47,14 +47,14 @@ sr::Scene busy_scene(sr::PixelFilter filter) {
 }  // namespace
 
 TEST_CASE("output is byte-identical for any thread count") {
-  for (auto filter : {sr::PixelFilter::box(), sr::PixelFilter::tent()}) {
+  for (const auto& filter : {splinefig::Kernel::box(), splinefig::Kernel::tent()}) {
     sr::Scene s = busy_scene(filter);
     auto ref = sr::rasterize(s, 1);
     for (int threads : {2, 3, 7, 0}) {
       auto img = sr::rasterize(s, threads);
-      INFO("filter " << filter.name << ", threads " << threads);
-      REQUIRE(img.rgba.size() == ref.rgba.size());
-      REQUIRE(std::memcmp(img.rgba.data(), ref.rgba.data(), ref.rgba.size() * sizeof(float)) == 0);
+      INFO("filter " << filter.name() << ", threads " << threads);
+      REQUIRE(img.pixels.size() == ref.pixels.size());
+      REQUIRE(std::memcmp(img.pixels.data(), ref.pixels.data(), ref.pixels.size() * sizeof(float)) == 0);
     }
   }
 }
@@ -99,7 +99,7 @@ TEST_CASE("huge shapes finish quickly and are clipped correctly") {
   s.stroke_polyline(std::vector<sr::Vec2>{{0, 0}, {5, 5}}, false, st, {0, 1, 0, 0.2f});
   s.fill_polygon({{{-1e15, -1e15}, {1e15, 0}, {0, 1e15}}}, sr::FillRule::NonZero, {0.5f, 0.5f, 0.5f, 0.5f});
   auto img = sr::rasterize(s, 2);
-  for (float v : img.rgba) REQUIRE(std::isfinite(v));
+  for (float v : img.pixels) REQUIRE(std::isfinite(v));
   CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(20));
 }
 

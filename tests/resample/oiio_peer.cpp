@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <splinefig/resample/resample.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <OpenImageIO/filter.h>
 #include <OpenImageIO/imagebuf.h>
@@ -45,12 +46,12 @@ double max_diff(const Image& a, const Image& b) {
 // One of our filters inside OpenImageIO, scaled to a width in destination pixels the way its
 // own filters are (k(x * support / width)); `mirror` evaluates k(-x).
 struct Wrapped : OIIO::Filter2D {
-  Filter f;
+  Kernel f;
   double sx, sy;
   bool mirror;
-  Wrapped(Filter filter, float w, float h, bool m)
+  Wrapped(Kernel filter, float w, float h, bool m)
       : OIIO::Filter2D(w, h), f(std::move(filter)), sx(4.0 / w), sy(4.0 / h), mirror(m) {}
-  float k(double s) const { return static_cast<float>(evaluate(f, mirror ? -s : s)); }
+  float k(double s) const { return static_cast<float>(f(mirror ? -s : s)); }
   float operator()(float x, float y) const override { return k(x * sx) * k(y * sy); }
   bool separable() const override { return true; }
   float xfilt(float x) const override { return k(x * sx); }
@@ -74,7 +75,7 @@ TEST_CASE("OpenImageIO resize agrees to 1e-5 with clamped edges and symmetric ke
       ResampleOptions opt;
       opt.edge = Edge::clamp;
       opt.threads = 1;
-      const Image ours = resample(src, s.dw, s.dh, parse_filter(p.ours), opt);
+      const Image ours = resample(src, s.dw, s.dh, parse_kernel(p.ours), opt);
       const Image theirs = oiio_resize(src, s.dw, s.dh, p.theirs);
       INFO(p.ours << " " << s.sw << "x" << s.sh << " -> " << s.dw << "x" << s.dh);
       CHECK(max_diff(ours, theirs) <= 1e-5);
@@ -83,7 +84,7 @@ TEST_CASE("OpenImageIO resize agrees to 1e-5 with clamped edges and symmetric ke
 
 TEST_CASE("OpenImageIO evaluates k(centre - x): an asymmetric Beta kernel comes out mirrored") {
   const Image src = random_image(24, 20, 3, 11);
-  const Filter beta = parse_filter("beta:b1=2,b2=1");
+  const Kernel beta = parse_kernel("beta:b1=2,b2=1");
   for (auto [w, h] : {std::pair{60, 50}, std::pair{8, 10}}) {
     const float fw = 4.0f * std::max(1.0f, float(w) / src.width), fh = 4.0f * std::max(1.0f, float(h) / src.height);
     ResampleOptions opt;
@@ -105,10 +106,10 @@ TEST_CASE("where OpenImageIO differs: edges other than clamp, and y enlarged mor
   // resize always clamps: our black, wrap and mirror edges give other border pixels.
   for (Edge e : {Edge::black, Edge::wrap}) {
     opt.edge = e;
-    CHECK(max_diff(resample(src, 40, 30, parse_filter("catmull-rom"), opt), oiio_resize(src, 40, 30, "catmull-rom")) > 1e-2);
+    CHECK(max_diff(resample(src, 40, 30, parse_kernel("catmull-rom"), opt), oiio_resize(src, 40, 30, "catmull-rom")) > 1e-2);
   }
   // OpenImageIO 2.4 sizes the tap window of both axes from the filter's width, so when y is
   // enlarged more than x (here 1x and 4x) the y kernel is cut to fewer taps than its support.
   opt.edge = Edge::clamp;
-  CHECK(max_diff(resample(src, 16, 48, parse_filter("bspline"), opt), oiio_resize(src, 16, 48, "bspline")) > 1e-3);
+  CHECK(max_diff(resample(src, 16, 48, parse_kernel("bspline"), opt), oiio_resize(src, 16, 48, "bspline")) > 1e-3);
 }

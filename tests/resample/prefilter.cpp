@@ -5,7 +5,7 @@
 
 #include <splinefig/resample/prefilter.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
 #include <random>
@@ -39,7 +39,7 @@ TEST_CASE("the B-spline prefilter solves the 1-4-1 system with each edge extensi
       std::vector<float> p(static_cast<size_t>(n));
       for (auto& v : p) v = u(rng);
       std::vector<float> c = p;
-      prefilter_line(c.data(), n, 1, sampled_kernel(parse_filter("bspline")), e);
+      prefilter_line(c.data(), n, 1, sampled_kernel(parse_kernel("bspline")), e);
       INFO(edge_name(e) << " n = " << n);
       double worst = 0;
       for (long i = 0; i < n; ++i) {
@@ -65,7 +65,7 @@ TEST_CASE("prefilter then resampling to the same size returns the input") {
         ResampleOptions opt;
         opt.edge = e;
         opt.interpolating = true;
-        const Image out = resample(src, w, h, parse_filter(spec), opt);
+        const Image out = resample(src, w, h, parse_kernel(spec), opt);
         double worst = 0;
         for (size_t i = 0; i < src.pixels.size(); ++i)
           worst = std::max(worst, double(std::abs(out.pixels[i] - src.pixels[i])));
@@ -80,7 +80,7 @@ TEST_CASE("an interpolating B-spline upsampled by 3 passes through the samples")
   ResampleOptions opt;
   opt.interpolating = true;
   opt.edge = Edge::mirror;
-  const Image out = resample(src, 60, 42, parse_filter("bspline"), opt);
+  const Image out = resample(src, 60, 42, parse_kernel("bspline"), opt);
   double worst = 0;
   for (int y = 0; y < 14; ++y)
     for (int x = 0; x < 20; ++x)
@@ -88,24 +88,24 @@ TEST_CASE("an interpolating B-spline upsampled by 3 passes through the samples")
   CHECK(worst <= 1e-5);
   // Without the prefilter the B-spline blurs the random samples far more than that.
   opt.interpolating = false;
-  const Image blurred = resample(src, 60, 42, parse_filter("bspline"), opt);
+  const Image blurred = resample(src, 60, 42, parse_kernel("bspline"), opt);
   CHECK(std::abs(blurred.at(31, 31, 0) - src.at(10, 10, 0)) + std::abs(blurred.at(4, 7, 1) - src.at(1, 2, 1)) > 1e-3);
 }
 
 TEST_CASE("the sampled kernel and the stability condition k(0) > 1/2") {
-  const SampledKernel b = sampled_kernel(parse_filter("bspline"));
+  const SampledKernel b = sampled_kernel(parse_kernel("bspline"));
   CHECK(b.left == Approx(1.0 / 6).epsilon(1e-15));
   CHECK(b.centre == Approx(4.0 / 6).epsilon(1e-15));
   // beta b2 = 0 is stable for (3 - sqrt 5)/2 < b1 < (3 + sqrt 5)/2 ~ 2.618.
-  CHECK_NOTHROW(sampled_kernel(parse_filter("beta:b1=2.6,b2=0")));
-  CHECK_THROWS_WITH(sampled_kernel(parse_filter("beta:b1=2.65,b2=0")), Catch::Contains("no stable inverse"));
-  CHECK_THROWS_WITH(sampled_kernel(parse_filter("beta:b1=0.37,b2=0")), Catch::Contains("no stable inverse"));
-  CHECK_NOTHROW(sampled_kernel(parse_filter("beta:b1=0.39,b2=0")));
+  CHECK_NOTHROW(sampled_kernel(parse_kernel("beta:b1=2.6,b2=0")));
+  CHECK_THROWS_WITH(sampled_kernel(parse_kernel("beta:b1=2.65,b2=0")), Catch::Contains("no stable inverse"));
+  CHECK_THROWS_WITH(sampled_kernel(parse_kernel("beta:b1=0.37,b2=0")), Catch::Contains("no stable inverse"));
+  CHECK_NOTHROW(sampled_kernel(parse_kernel("beta:b1=0.39,b2=0")));
   // The quadratic B-spline's samples (1/2, 1/2) vanish at Nyquist; the quintic spans 5 taps.
-  CHECK_THROWS_WITH(sampled_kernel(parse_filter("uniform-bspline:degree=2")), Catch::Contains("no stable inverse"));
-  CHECK_THROWS_WITH(sampled_kernel(parse_filter("uniform-bspline:degree=5")), Catch::Contains("only kernels sampled"));
+  CHECK_THROWS_WITH(sampled_kernel(parse_kernel("uniform-bspline:degree=2")), Catch::Contains("no stable inverse"));
+  CHECK_THROWS_WITH(sampled_kernel(parse_kernel("uniform-bspline:degree=5")), Catch::Contains("only kernels sampled"));
   // An interpolating kernel's prefilter is the identity.
-  const SampledKernel c = sampled_kernel(parse_filter("catmull-rom"));
+  const SampledKernel c = sampled_kernel(parse_kernel("catmull-rom"));
   CHECK(c.left == 0);
   CHECK(c.right == 0);
 }

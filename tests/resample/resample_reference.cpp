@@ -4,11 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
 #include <functional>
 #include <random>
+#include <type_traits>
 
 using namespace splinefig;
 
@@ -16,9 +17,9 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-using Kernel = std::function<double(double)>;
+using RefKernel = std::function<double(double)>;
 
-Kernel reference_kernel(const std::string& spec) {
+RefKernel reference_kernel(const std::string& spec) {
   if (spec == "box") return [](double s) { return s >= -0.5 && s < 0.5 ? 1.0 : 0.0; };
   if (spec == "tent") return [](double s) { return std::max(0.0, 1 - std::abs(s)); };
   if (spec == "lanczos3")
@@ -55,7 +56,7 @@ long reference_edge(long j, long n, Edge e) {
   return j;
 }
 
-std::vector<double> reference_resample(const Image& src, int W, int H, const Kernel& k, Edge e) {
+std::vector<double> reference_resample(const Image& src, int W, int H, const RefKernel& k, Edge e) {
   const int C = src.channels;
   std::vector<double> out(static_cast<size_t>(W) * H * C);
   const double fx = std::max(1.0, double(src.width) / W), fy = std::max(1.0, double(src.height) / H);
@@ -111,7 +112,7 @@ TEST_CASE("resampling matches a float64 reference for every edge mode, up, down 
                   << " channels " << channels);
         ResampleOptions opt;
         opt.edge = e;
-        const Image got = resample(src, cs.dw, cs.dh, parse_filter(spec), opt);
+        const Image got = resample(src, cs.dw, cs.dh, parse_kernel(spec), opt);
         REQUIRE(got.channels == channels);
         CHECK(max_error(got, reference_resample(src, cs.dw, cs.dh, reference_kernel(spec), e)) <= 1e-5);
       }
@@ -125,7 +126,7 @@ TEST_CASE("every channel count from 1 to 4 with each edge mode") {
       opt.edge = e;
       INFO(c << " channels, " << edge_name(e));
       for (auto [w, h] : {std::pair{40, 27}, std::pair{6, 5}}) {
-        const Image got = resample(src, w, h, parse_filter("catmull-rom"), opt);
+        const Image got = resample(src, w, h, parse_kernel("catmull-rom"), opt);
         CHECK(max_error(got, reference_resample(src, w, h, reference_kernel("catmull-rom"), e)) <= 1e-5);
       }
     }
@@ -137,24 +138,24 @@ TEST_CASE("the result is bit-identical for any thread count") {
     ResampleOptions opt;
     opt.edge = Edge::mirror;
     opt.threads = 1;
-    const Image one = resample(src, w, h, parse_filter("bspline"), opt);
+    const Image one = resample(src, w, h, parse_kernel("bspline"), opt);
     for (int t : {2, 3, 7}) {
       opt.threads = t;
-      const Image many = resample(src, w, h, parse_filter("bspline"), opt);
+      const Image many = resample(src, w, h, parse_kernel("bspline"), opt);
       CHECK(many.pixels == one.pixels);
     }
   }
 }
 
 TEST_CASE("weights: double precision, normalised, widened only when reducing") {
-  const AxisWeights up = axis_weights(parse_filter("catmull-rom"), 10, 20, Edge::clamp);
+  const AxisWeights up = axis_weights(parse_kernel("catmull-rom"), 10, 20);
   CHECK(up.taps == 4);
   // Output 0: x = 0.25; taps at centres -1.5 .. 1.5 give k(1.75), k(0.75), k(-0.25), k(-1.25).
-  const Kernel k = reference_kernel("catmull-rom");
+  const RefKernel k = reference_kernel("catmull-rom");
   CHECK(up.first[0] == -2);
   CHECK(up.w[0] == Approx(k(1.75)).margin(1e-7));
   CHECK(up.w[2] == Approx(k(-0.25)).margin(1e-7));
-  const AxisWeights down = axis_weights(parse_filter("bspline"), 40, 10, Edge::clamp);
+  const AxisWeights down = axis_weights(parse_kernel("bspline"), 40, 10);
   CHECK(down.taps >= 15);
   CHECK(down.taps <= 17);
   for (int i = 0; i < 10; ++i) {
@@ -162,7 +163,35 @@ TEST_CASE("weights: double precision, normalised, widened only when reducing") {
     for (int t = 0; t < down.taps; ++t) s += down.w[static_cast<size_t>(i * down.taps + t)];
     CHECK(s == Approx(1).margin(1e-6));
   }
-  CHECK_THROWS_AS(resample(random_image(4, 4, 1, 1), 0, 3, parse_filter("bspline")), std::invalid_argument);
+  CHECK_THROWS_AS(resample(random_image(4, 4, 1, 1), 0, 3, parse_kernel("bspline")), std::invalid_argument);
+}
+
+TEST_CASE("axis weights depend on the kernel and the sizes only: the edge mode decides what the taps read") {
+  // The table takes no edge mode (every mode keeps all taps in the sum).
+  static_assert(std::is_invocable_r_v<AxisWeights, decltype(&axis_weights), const Kernel&, int, int>);
+  // So black edges give the share of the (normalised) weights that fall inside the image:
+  // a 10x1 image of ones, doubled in width, predicted from the tables alone.
+  const Kernel k = parse_kernel("bspline");
+  const AxisWeights ax = axis_weights(k, 10, 20), ay = axis_weights(k, 1, 1);
+  double wy = 0;
+  for (int t = 0; t < ay.taps; ++t)
+    if (ay.first[0] + t == 0) wy = ay.w[static_cast<size_t>(t)];
+  Image ones(10, 1, 1);
+  std::fill(ones.pixels.begin(), ones.pixels.end(), 1.0f);
+  for (Edge e : {Edge::clamp, Edge::mirror, Edge::wrap, Edge::black}) {
+    INFO(edge_name(e));
+    ResampleOptions opt;
+    opt.edge = e;
+    const Image out = resample(ones, 20, 1, k, opt);
+    for (int i = 0; i < 20; ++i) {
+      double inside = 0;
+      for (int t = 0; t < ax.taps; ++t) {
+        const long j = ax.first[static_cast<size_t>(i)] + t;
+        if (j >= 0 && j < 10) inside += ax.w[static_cast<size_t>(i * ax.taps + t)];
+      }
+      CHECK(out.at(i, 0, 0) == Approx(e == Edge::black ? inside * wy : 1.0).margin(1e-6));
+    }
+  }
 }
 
 TEST_CASE("edge modes map positions as the contract draws them") {

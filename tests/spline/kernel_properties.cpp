@@ -3,6 +3,7 @@
 // degree-n kernels, integrals, continuity classes, and the asymmetric Beta kernel.
 #include <catch2/catch.hpp>
 #include <splinefig/spline/basis.hpp>
+#include <splinefig/kernel/analysis.hpp>
 #include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
@@ -106,9 +107,9 @@ TEST_CASE("Exact kernel values: Catmull-Rom 9/16, -1/16, B-spline 23/48, 1/48, c
     CHECK(kernel(cardinal(a), 1.5) == Approx(-a / 8).margin(1e-15));
   }
   // Derivatives: Catmull-Rom k'(1/2) = 3(3/2)(1/4) - 5(1/2) = -11/8; B-spline k''(0) = -2.
-  CHECK(kernel_derivative(cr, 0.5, 1) == -11.0 / 8);
-  CHECK(kernel_derivative(bs, 0.0, 2) == Approx(-2.0).epsilon(1e-15));
-  CHECK(kernel_derivative(bs, 3.0, 1) == 0.0);
+  CHECK(basis_kernel(cr).derivative(0.5, 1) == -11.0 / 8);
+  CHECK(basis_kernel(bs).derivative(0.0, 2) == Approx(-2.0).epsilon(1e-15));
+  CHECK(basis_kernel(bs).derivative(3.0, 1) == 0.0);
 }
 
 TEST_CASE("The Beta kernel with bias is not symmetric: b1 = 2, b2 = 0 gives k(-1), k(0), k(1) = 2, 24, 16 over 42") {
@@ -126,7 +127,7 @@ TEST_CASE("Kernel integrals are 1 for every family (partition of unity)") {
   for (const Basis& b : {catmull_rom(), cardinal(0.0), cardinal(1.7), bspline(), tensioned_bspline(0.25),
                          beta(2.0, 0.0), beta(0.3, 5.0), uniform_bspline(1), uniform_bspline(2), uniform_bspline(6)}) {
     INFO(b.spec);
-    CHECK(kernel_integral(b) == Approx(1.0).margin(1e-15));
+    CHECK(basis_kernel(b).integral() == Approx(1.0).margin(1e-15));
     // And the integer translates sum to 1 everywhere: sum_j k(s - j) = 1.
     for (double s : {0.0, 0.125, 0.5, 0.875}) {
       double sum = 0;
@@ -137,18 +138,18 @@ TEST_CASE("Kernel integrals are 1 for every family (partition of unity)") {
 }
 
 TEST_CASE("Continuity classes: cardinal C1, B-spline C2, Duff C1, Beta with bias C0, degree n C(n-1)") {
-  CHECK(kernel_continuity(catmull_rom()) == 1);
-  CHECK(kernel_continuity(cardinal(1.0)) == 1);
-  CHECK(kernel_continuity(cardinal(0.0)) == 1);  // the Hermite (smoothstep) kernel
-  CHECK(kernel_continuity(bspline()) == 2);
-  CHECK(kernel_continuity(tensioned_bspline(1.0)) == 2);
-  CHECK(kernel_continuity(tensioned_bspline(0.5)) == 1);  // b2 = 12 != 0: X'' jumps by b2 X'
-  CHECK(kernel_continuity(beta(2.0, 0.0)) == 0);          // X' jumps by the factor b1
-  CHECK(kernel_continuity(beta(1.0, 3.0)) == 1);
-  for (int n = 1; n <= 6; ++n) CHECK(kernel_continuity(uniform_bspline(n)) == n - 1);
+  CHECK(continuity(basis_kernel(catmull_rom())) == 1);
+  CHECK(continuity(basis_kernel(cardinal(1.0))) == 1);
+  CHECK(continuity(basis_kernel(cardinal(0.0))) == 1);  // the Hermite (smoothstep) kernel
+  CHECK(continuity(basis_kernel(bspline())) == 2);
+  CHECK(continuity(basis_kernel(tensioned_bspline(1.0))) == 2);
+  CHECK(continuity(basis_kernel(tensioned_bspline(0.5))) == 1);  // b2 = 12 != 0: X'' jumps by b2 X'
+  CHECK(continuity(basis_kernel(beta(2.0, 0.0))) == 0);          // X' jumps by the factor b1
+  CHECK(continuity(basis_kernel(beta(1.0, 3.0))) == 1);
+  for (int n = 1; n <= 6; ++n) CHECK(continuity(basis_kernel(uniform_bspline(n))) == n - 1);
   // Catmull-Rom's k'' at s = 0: c_1''(0) = -5 = c_2''(1), no jump; at s = 1:
   // c_0''(0) - c_1''(1) = 2 - 4 = -2 (c_0 = -u^3/2 + u^2 - u/2, c_1 = 3u^3/2 - 5u^2/2 + 1).
-  const std::vector<double> j2 = kernel_jumps(catmull_rom(), 2);
+  const std::vector<double> j2 = jumps(basis_kernel(catmull_rom()), 2);
   REQUIRE(j2.size() == 5);  // knots -2, -1, 0, 1, 2
   CHECK(j2[2] == Approx(0.0).margin(1e-14));
   CHECK(j2[3] == Approx(-2.0).epsilon(1e-14));

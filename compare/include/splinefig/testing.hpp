@@ -3,7 +3,7 @@
 //
 //   #include <splinefig/testing.hpp>
 //   using splinefig::testing::MatchesReference;
-//   auto img = splinefig::compare::Image::from_linear_rgba(w, h, rgba.data());
+//   splinefig::Image img = ...;  // e.g. splinefig::render::rasterize(scene)
 //   CHECK_THAT(img, MatchesReference("tests/reference/cbasis.png", {.fail = 2.0f / 255, .shift = 1}));
 //
 // The comparison is `splinefig diff`'s (splinefig/compare/compare.hpp). A linear image checked
@@ -18,8 +18,8 @@
 //
 // Header-only on purpose: only test code includes it, and it needs Catch2's headers.
 #include <splinefig/compare/compare.hpp>
-#include <splinefig/compare/io.hpp>
 #include <splinefig/compare/visualize.hpp>
+#include <splinefig/image/io.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -67,16 +67,14 @@ inline bool is_eight_bit_path(const std::string& path) {
 
 // What the reference file would hold for `im`: a linear image against an 8-bit reference goes
 // through the 8-bit sRGB file splinefig writes.
-inline compare::Image as_stored(const compare::Image& im, const std::string& reference, bool linear) {
-  if (!is_eight_bit_path(reference) || im.encoding != compare::Encoding::linear) return im;
+inline Image as_stored(const Image& im, const std::string& reference, bool linear) {
+  if (!is_eight_bit_path(reference) || im.encoding != Encoding::linear) return im;
   namespace fs = std::filesystem;
   static int counter = 0;
   const fs::path tmp = fs::temp_directory_path() /
                        ("splinefig-match-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".png");
-  compare::write_image(tmp.string(), im);
-  compare::LoadOptions lo;
-  lo.linear = linear;
-  compare::Image back = compare::load_image(tmp.string(), lo);
+  write_image(tmp.string(), im);
+  Image back = read_image(tmp.string(), linear ? ReadMode::linear : ReadMode::as_stored);
   std::error_code ec;
   fs::remove(tmp, ec);
   return back;
@@ -84,16 +82,16 @@ inline compare::Image as_stored(const compare::Image& im, const std::string& ref
 
 }  // namespace detail
 
-class ReferenceMatcher : public Catch::MatcherBase<compare::Image> {
+class ReferenceMatcher : public Catch::MatcherBase<Image> {
  public:
   ReferenceMatcher(std::string reference, Tolerance tolerance)
       : m_reference(std::move(reference)), m_tolerance(tolerance) {}
 
-  bool match(const compare::Image& actual) const override {
+  bool match(const Image& actual) const override {
     namespace fs = std::filesystem;
     if (updating_references()) {
       fs::create_directories(fs::path(m_reference).parent_path().empty() ? fs::path(".") : fs::path(m_reference).parent_path());
-      compare::write_image(m_reference, actual);
+      write_image(m_reference, actual);
       m_message = "updated reference " + m_reference + " (SPLINEFIG_UPDATE_REFERENCES=1)";
       std::cerr << m_message << "\n";
       return true;
@@ -102,19 +100,17 @@ class ReferenceMatcher : public Catch::MatcherBase<compare::Image> {
     const fs::path ref(m_reference);
     const std::string stem = (fs::path(dir) / ref.stem()).string();
     const std::string ext = ref.extension().string();
-    compare::LoadOptions lo;
-    lo.linear = m_tolerance.linear;
-    compare::Image expected;
+    Image expected;
     try {
-      expected = compare::load_image(m_reference, lo);
-    } catch (const compare::UnreadableImage& e) {
+      expected = read_image(m_reference, m_tolerance.linear ? ReadMode::linear : ReadMode::as_stored);
+    } catch (const UnreadableImage& e) {
       fs::create_directories(dir);
-      compare::write_image(stem + ".actual" + ext, actual);
+      write_image(stem + ".actual" + ext, actual);
       m_message = std::string("matches reference: cannot read it (") + e.what() +
                   "); run with SPLINEFIG_UPDATE_REFERENCES=1 to create it. Actual image: " + stem + ".actual" + ext;
       return false;
     }
-    const compare::Image stored = detail::as_stored(actual, m_reference, m_tolerance.linear);
+    const Image stored = detail::as_stored(actual, m_reference, m_tolerance.linear);
     compare::Options o;
     o.thresholds.fail = m_tolerance.fail;
     o.thresholds.failpercent = m_tolerance.failpercent;
@@ -134,9 +130,9 @@ class ReferenceMatcher : public Catch::MatcherBase<compare::Image> {
     const float m = c.metrics.max_error;
     const float scale = m > 0.0f && std::isfinite(m) ? 1.0f / m : 1.0f;
     fs::create_directories(dir);
-    compare::write_image(stem + ".actual" + ext, actual);
-    compare::write_image(stem + ".diff.png", compare::difference_image(c.pa, c.pb, scale));
-    compare::write_image(stem + ".triptych.png", compare::triptych(c.pa, c.pb, scale));
+    write_image(stem + ".actual" + ext, actual);
+    write_image(stem + ".diff.png", compare::difference_image(c.pa, c.pb, scale));
+    write_image(stem + ".triptych.png", compare::triptych(c.pa, c.pb, scale));
     m_message = "matches reference " + m_reference + "\n" +
                 compare::text_report(c, o, m_reference, "actual", true) +
                 "  actual:   " + stem + ".actual" + ext + "\n" +
@@ -162,8 +158,8 @@ inline ReferenceMatcher MatchesReference(std::string reference, Tolerance tolera
 
 namespace Catch {
 template <>
-struct StringMaker<splinefig::compare::Image> {
-  static std::string convert(const splinefig::compare::Image& im) {
+struct StringMaker<splinefig::Image> {
+  static std::string convert(const splinefig::Image& im) {
     return std::to_string(im.width) + " x " + std::to_string(im.height) + " image with " + std::to_string(im.channels) +
            " channels";
   }

@@ -24,6 +24,15 @@ std::vector<SpecFile> list_specs(const std::string& dir);
 // "axes": [{"pixel_box", "x_range", "y_range", "x_scale", "y_scale", "series": [{"label",
 // "color", "kind"}]}]}]}.
 std::string index_json(const std::vector<FigureInfo>& figures);
+// Reads index_json()'s output back. Throws std::runtime_error ("index.json: what, where")
+// if the text is not such an index.
+std::vector<FigureInfo> read_index_json(const std::string& text);
+// The index of a directory after some of its figures were rendered again: `rendered`, plus
+// every entry of `previous` that was not rendered again and whose files are all still in
+// `dir`. Ordered as `specs` lists the names; entries of no listed spec come last, in their
+// previous order.
+std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, const std::vector<FigureInfo>& rendered,
+                                    const std::vector<SpecFile>& specs, const std::string& dir);
 // A self-contained gallery page: every figure with its title and caption. After loading
 // it marks each <img> with data-loaded="yes" or "no", and <body> with data-images-ok.
 std::string gallery_html(const std::vector<FigureInfo>& figures);

@@ -40,7 +40,7 @@ struct RenderOptions {
 };
 
 struct RenderedFigure {
-  render::Image image;
+  Image image;
   FigureInfo info;
 };
 

@@ -2,10 +2,13 @@
 // splinefig's renderer: exact-area antialiased drawing into linear-light float images.
 // No spline knowledge here. Geometry (paths, strokes, dashes) -> coverage -> pixels.
 //
-// Conventions (docs/conventions.md): (0,0) is the top-left corner of the top-left pixel, y down,
-// pixel (i,j) has centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha
-// at the API; the image holds premultiplied linear RGBA float32, composited with
-// Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
+// Conventions (docs/conventions.md): (0,0) is the top-left corner of the top-left pixel, y down, pixel (i,j) has
+// centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha at the API; the
+// image (splinefig::Image, image/image.hpp) holds premultiplied linear RGBA float32,
+// composited with Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
+#include <splinefig/image/image.hpp>
+#include <splinefig/kernel/kernel.hpp>
+
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -25,8 +28,6 @@ struct Color {  // linear light, straight alpha
 };
 // "#rrggbb" or "#rrggbbaa" (sRGB) -> linear; nullopt if it is not such a string.
 std::optional<Color> parse_hex_color(std::string_view hex);
-float srgb_to_linear(float v);
-float linear_to_srgb(float v);
 
 enum class Join { Miter, Round, Bevel };
 enum class Cap { Butt, Round, Square };
@@ -42,24 +43,13 @@ struct StrokeStyle {
   double dash_offset = 0.0;
 };
 
-// A separable pixel filter k(x) k(y) given as a piecewise polynomial on unit intervals:
-// piece p covers [lo + p, lo + p + 1) and holds coefficients in ascending powers of the
-// local variable u = x - (lo + p) in [0, 1). Box is the default (exact area coverage).
-// The figures layer converts spline basis functions into this form. A pixel's value is the
-// shape convolved with k(x) k(y) at the pixel centre, divided by (integral of k)^2, computed
-// exactly (see docs/renderer.md).
-struct PixelFilter {
-  enum class Kind { Box, Piecewise } kind = Kind::Box;
-  double lo = -0.5;
-  std::vector<std::vector<double>> pieces;
-  std::string name = "box";
-
-  static PixelFilter box();
-  static PixelFilter tent();  // the linear B-spline, support [-1, 1]
-};
-// Throws std::invalid_argument if `f` is not a usable filter (no pieces, non-finite values,
-// a zero integral, support wider than 8 px).
-void validate(const PixelFilter& f);
+// The pixel filter is a separable k(x) k(y) with k a piecewise-polynomial Kernel
+// (kernel/kernel.hpp; a spline basis function through spline/kernel.hpp). The box (the default)
+// is exact area coverage; otherwise a pixel's value is the shape convolved with k(x) k(y) at
+// the pixel centre, divided by (integral of k)^2, computed exactly (see docs/renderer.md).
+// Throws std::invalid_argument if `k` is not a usable pixel filter (not a polynomial, more than
+// 8 pieces or coefficients per piece, a zero integral).
+void validate_pixel_filter(const Kernel& k);
 
 enum class Marker { Circle, Square, Diamond, Cross, Plus };
 enum class HAlign { Left, Center, Right };
@@ -78,19 +68,11 @@ struct TextExtent {
 };
 TextExtent measure_text(std::string_view text, const TextStyle& style);
 
-// Premultiplied linear RGBA float32, row-major, 4 floats per pixel.
-struct Image {
-  int width = 0, height = 0;
-  std::vector<float> rgba;
-  float* pixel(int x, int y) { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
-  const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
-};
-
 // A drawing: a display list, rasterized at once (by tiles or bands, on any number of
 // threads, with byte-identical results). Items are composited in the order added.
 class Scene {
  public:
-  Scene(int width, int height, Color background = {1, 1, 1, 1}, PixelFilter filter = PixelFilter::box());
+  Scene(int width, int height, Color background = {1, 1, 1, 1}, Kernel filter = Kernel::box());
 
   void stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color);
   void fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color);
@@ -112,21 +94,13 @@ class Scene {
  private:
   int width_, height_;
   Color background_;
-  PixelFilter filter_;
+  Kernel filter_;
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
 };
 
+// The picture as a linear-light RGBA image (associated alpha, channels R, G, B, A).
 // threads <= 0: all hardware threads.
 Image rasterize(const Scene& scene, int threads = 0);
-
-struct WriteOptions {
-  std::string software;     // "splinefig 0.1.0" by default
-  std::string description;  // e.g. the spec name
-};
-// Writes PNG (8-bit sRGB with alpha, straight alpha) or EXR (float32 linear RGBA), chosen by
-// the extension, to a temporary file in the same directory that is then renamed.
-// Throws std::runtime_error naming the path on failure; never leaves a partial file.
-void write_image(const Image& image, const std::string& path, const WriteOptions& options = {});
 
 }  // namespace splinefig::render

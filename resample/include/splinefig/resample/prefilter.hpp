@@ -22,9 +22,9 @@
 // sweeps of Gaussian elimination, whose pivots converge to the steady recursions above (the
 // first few differ: that is the exact boundary handling). wrap gives a circulant system, solved by
 // the two recursions started from their exact periodic sums.
-#include <splinefig/resample/image.hpp>
+#include <splinefig/image/image.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/filter_analysis.hpp>
+#include <splinefig/kernel/kernel.hpp>
 
 namespace splinefig {
 
@@ -33,12 +33,12 @@ namespace splinefig {
 struct SampledKernel {
   double left = 0, centre = 1, right = 0;  // coefficients of c_{i+1}, c_i, c_{i-1}
 };
-SampledKernel sampled_kernel(const Filter& f);
+SampledKernel sampled_kernel(const Kernel& k);
 
 // Solves sum_j c_j k(i-j) = p_i along one line of n values (stride `stride`), in place.
 void prefilter_line(float* p, long n, long stride, const SampledKernel& h, Edge edge);
 
 // Applies the prefilter along every row and every column of `img`, in place.
-void prefilter(Image& img, const Filter& f, Edge edge, int threads = 0);
+void prefilter(Image& img, const Kernel& k, Edge edge, int threads = 0);
 
 }  // namespace splinefig

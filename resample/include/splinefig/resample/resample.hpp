@@ -1,7 +1,7 @@
 #pragma once
-// Image resampling with a spline basis function (or box, tent, lanczos3) as the reconstruction
-// filter. The contract (docs/resample.md), per axis with S source and D destination
-// pixels:
+// Image resampling with a kernel (kernel/kernel.hpp: a spline basis function, box, tent,
+// lanczos3) as the reconstruction filter. The contract (docs/resample.md), per axis with S
+// source and D destination pixels:
 //   output pixel i has its centre at i + 1/2, which maps to the source position x = (i+1/2) S/D;
 //   the filter is widened by f = max(1, S/D) (only when reducing);
 //   value = sum_j w_j p[j] / sum_j w_j with w_j = k((x - (j + 1/2)) / f)
@@ -15,8 +15,8 @@
 // the image is filtered horizontally into a small ring of rows and then vertically, in parallel
 // over bands of output rows. Every output value is computed by the same operations whatever the
 // thread count, so the result is bit-identical for any number of threads.
-#include <splinefig/resample/image.hpp>
-#include <splinefig/spline/filter_analysis.hpp>
+#include <splinefig/image/image.hpp>
+#include <splinefig/kernel/kernel.hpp>
 
 #include <optional>
 #include <stdexcept>
@@ -33,7 +33,8 @@ const char* edge_name(Edge e);
 // Source index for a position j outside [0, size) under an edge mode; -1 for black.
 long edge_index(long j, long size, Edge e);
 
-// The weights of one axis. Output i reads the extended source positions
+// The weights of one axis; they do not depend on the edge mode (every mode keeps all taps in
+// the sum, it only decides what they read). Output i reads the extended source positions
 // first[i] .. first[i] + taps - 1 (which may lie outside [0, src)) with weights
 // w[i*taps .. i*taps + taps - 1], already divided by their sum.
 struct AxisWeights {
@@ -43,7 +44,7 @@ struct AxisWeights {
   long lo = 0, hi = 0;  // smallest and largest extended position any output reads
 };
 // Throws std::invalid_argument when the weights of some output sum to zero.
-AxisWeights axis_weights(const Filter& f, int src, int dst, Edge edge);
+AxisWeights axis_weights(const Kernel& k, int src, int dst);
 
 struct ResampleOptions {
   Edge edge = Edge::clamp;
@@ -54,8 +55,8 @@ struct ResampleOptions {
 // Resamples `src` into `dst`, whose width and height give the new size; dst.channels must
 // equal src.channels and dst.pixels must be allocated. Throws std::invalid_argument for bad
 // arguments (empty images, channel mismatch, a filter without a stable prefilter inverse).
-void resample_into(const Image& src, Image& dst, const Filter& f, const ResampleOptions& opt = {});
-Image resample(const Image& src, int width, int height, const Filter& f, const ResampleOptions& opt = {});
+void resample_into(const Image& src, Image& dst, const Kernel& k, const ResampleOptions& opt = {});
+Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt = {});
 
 // The worker count `threads` (0: hardware) resolves to.
 int resolve_threads(int threads);

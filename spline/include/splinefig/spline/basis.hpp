@@ -6,7 +6,10 @@
 // U = [u^3 u^2 u 1]). For a cubic, the piece between knots x[i] and x[i+1] is
 //   X(u) = [u^3 u^2 u 1] M [x[i-1] x[i] x[i+1] x[i+2]]^T,  u in [0, 1].
 // Families: cardinal C_a (Catmull-Rom = C_0.5), B-spline B, Duff's tensioned B_a,
-// Barsky's Beta-spline B_{b1,b2}, and the uniform B-spline of any degree (seed 002 §4.16.10).
+// Barsky's Beta-spline B_{b1,b2}, the uniform B-spline of any degree (seed 002 §4.16.10), and
+// Mitchell and Netravali's (1988) cubic family M(B,C).
+#include <splinefig/kernel/kernel.hpp>
+
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -15,7 +18,8 @@
 namespace splinefig {
 
 struct Basis {
-  std::string family;       // "cardinal", "bspline", "tensioned-bspline", "beta", "uniform-bspline"
+  std::string family;       // "cardinal", "bspline", "tensioned-bspline", "beta", "uniform-bspline",
+                            // "mitchell-netravali"
   std::string spec;         // canonical spec, e.g. "cardinal:a=0.25" (parse_basis(spec) gives it back)
   int degree = 3;           // polynomial degree n; the matrix is (n+1)x(n+1)
   std::vector<double> m;    // row-major, m[r*(n+1)+c]; row r multiplies u^(n-r)
@@ -36,9 +40,18 @@ Basis bspline();                              // B
 Basis tensioned_bspline(double a);            // B_a (Duff); a > 0... any finite a != 0 gives a matrix
 Basis beta(double b1, double b2);             // B_{b1,b2} (Barsky); throws SpecError where d = 0
 Basis uniform_bspline(int degree);            // degree >= 1, seed 002's m_ij formula
+// Mitchell and Netravali's cubic family, in the memo's matrix form (rows u^3 .. u^0):
+//   M(B,C) = 1/6 [ -B-6C     12-9B-6C   -12+9B+6C  B+6C ]
+//                [ 3B+12C   -18+12B+6C   18-15B-12C -6C ]
+//                [ -3B-6C    0           3B+6C      0   ]
+//                [ B         6-2B        B          0   ]
+// Spec "mitchell-netravali:b=B,c=C" (both 1/3 by default, the authors' recommendation).
+Basis mitchell_netravali_basis(double b, double c);
 
-// Parses NAME[:key=value[,key=value...]] (docs/conventions.md). Throws SpecError.
+// Parses NAME[:key=value[,key=value...]] (docs/spline.md). Throws SpecError.
 Basis parse_basis(std::string_view spec);
+// The basis names parse_basis knows, comma-separated.
+std::string known_bases();
 
 // The basis function k(s) (docs/conventions.md kernel convention): a curve is
 // X(t) = sum_j x[j] k(t - j). For a cubic with columns c_0..c_3 of U M:
@@ -46,12 +59,11 @@ Basis parse_basis(std::string_view spec);
 // For degree n, the piece between knots i and i+1 uses x[i-h] .. x[i-h+n] with
 // h = (n-1)/2 (integer division; h = 1 for the cubic, as in the memo), so odd degrees give
 // centred kernels; column c is the piece on [h-c, h-c+1) and the support is [h-n, h+1].
+// A convenience for basis_kernel(b)(s) (spline/kernel.hpp): for many values, make the Kernel
+// once.
 double kernel(const Basis& b, double s);
 
 // Support [lo, hi] of the kernel (for a cubic: [-2, 2]).
-struct Support {
-  double lo, hi;
-};
 Support kernel_support(const Basis& b);
 
 // The basis segment c_i(u) = [u^n ... 1] M column i, for u in [0,1].

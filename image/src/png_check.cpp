@@ -3,7 +3,7 @@
 // exact filtered-scanline size that IHDR implies (section 7.2 for the row layout, 8.2 for the
 // Adam7 passes). libpng treats "not enough image data" as a benign error, so a PNG cut inside
 // its pixel data can decode to garbage rows without failing: this check is what catches it.
-#include <splinefig/compare/io.hpp>
+#include <splinefig/image/io.hpp>
 
 #include <zlib.h>
 
@@ -13,7 +13,7 @@
 #include <fstream>
 #include <vector>
 
-namespace splinefig::compare {
+namespace splinefig {
 namespace {
 
 std::uint32_t be32(const unsigned char* p) {
@@ -149,4 +149,4 @@ void check_png_structure(const std::string& path) {
   if (!have_iend) bad(path, "truncated PNG (no IEND chunk)");
 }
 
-}  // namespace splinefig::compare
+}  // namespace splinefig

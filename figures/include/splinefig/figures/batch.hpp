@@ -1,0 +1,38 @@
+#pragma once
+// Rendering a list of specs into a directory: one figure per worker thread, the results
+// handed back in spec order (what `splinefig figures` does with the built-in specs).
+#include <splinefig/figures/catalog.hpp>
+#include <splinefig/figures/figure.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace splinefig::figures {
+
+struct BatchOptions {
+  std::string out_dir;                       // must exist
+  std::vector<std::string> formats{"png"};   // file extensions: png, exr
+  double scale = 1;                          // output pixels per spec pixel
+  int threads = 0;                           // <= 0: all hardware threads
+  std::string software;                      // image metadata ("splinefig 1.2.3")
+};
+
+struct BatchResult {
+  std::string name;                 // the spec's name
+  std::optional<FigureInfo> info;   // with the files written; unset when the figure failed
+  std::string error;                // one line when it failed
+  double wall_ms = 0;
+  double cpu_ms = -1;               // the figure's own CPU time, when it ran on one thread
+};
+
+// Loads, renders and writes every spec. Figures render in parallel, one per worker: a
+// figure's serial parts (text, PNG encoding) dominate, so this beats splitting one figure
+// across threads; with one worker the rasterizer gets the threads instead. The images do not
+// depend on the thread count. `done` is called on the calling thread, in spec order, as each
+// result becomes available.
+void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
+                  const std::function<void(BatchResult&)>& done);
+
+}  // namespace splinefig::figures

@@ -1,0 +1,83 @@
+// A pool of figure workers whose results come back in spec order (see batch.hpp).
+#include <splinefig/figures/batch.hpp>
+#include <splinefig/image/io.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <ctime>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+namespace splinefig::figures {
+namespace {
+
+double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
+BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_threads) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const double c0 = thread_cpu_ms();
+  BatchResult result;
+  result.name = s.name;
+  try {
+    const FigureSpec spec = load_spec(s.path);
+    check_scaled_canvas(spec, o.scale, "--scale");
+    RenderedFigure r = render_figure(spec, {o.scale, raster_threads});
+    WriteOptions w;
+    w.software = o.software;
+    w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
+    for (const auto& format : o.formats) {
+      const std::string file = s.name + "." + format;
+      write_image((std::filesystem::path(o.out_dir) / file).string(), r.image, w);
+      r.info.files.push_back(file);
+    }
+    result.info = std::move(r.info);
+  } catch (const std::exception& e) {
+    result.error = e.what();
+  }
+  result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (raster_threads == 1) result.cpu_ms = thread_cpu_ms() - c0;
+  return result;
+}
+
+}  // namespace
+
+void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
+                  const std::function<void(BatchResult&)>& done) {
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const size_t workers =
+      std::min<size_t>(specs.size(), options.threads > 0 ? static_cast<unsigned>(options.threads) : hw);
+  const int raster_threads = workers > 1 ? 1 : options.threads;
+  std::vector<std::optional<BatchResult>> results(specs.size());
+  std::mutex mutex;
+  std::condition_variable ready;
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i = next++; i < specs.size(); i = next++) {
+      BatchResult r = render_one(specs[i], options, raster_threads);
+      std::lock_guard<std::mutex> lock(mutex);
+      results[i] = std::move(r);
+      ready.notify_all();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (size_t k = 0; k < workers; ++k) pool.emplace_back(work);
+  for (size_t i = 0; i < specs.size(); ++i) {
+    BatchResult r;
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      ready.wait(lock, [&] { return results[i].has_value(); });
+      r = std::move(*results[i]);
+    }
+    done(r);
+  }
+  for (auto& t : pool) t.join();
+}
+
+}  // namespace splinefig::figures

@@ -1,0 +1,68 @@
+#pragma once
+// Image files through OpenImageIO: strict reading and atomic writing.
+//
+// Reading is strict: a file that is missing, not a regular file, not an image, or truncated or
+// corrupt anywhere (header or pixel data) is an UnreadableImage, never an image of garbage.
+// For PNG the chunk structure, every CRC and the complete zlib stream of the IDAT chunks are
+// checked before decoding, because a PNG whose pixel data ends early can otherwise decode
+// without an error. Subimage 0, MIP level 0 is read.
+//
+// Writing goes through write_file_atomically (atomic_file.hpp): checked, fsync'd, renamed.
+#include <splinefig/image/atomic_file.hpp>
+#include <splinefig/image/image.hpp>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace splinefig {
+
+// A file that cannot be read as an image. what() is one line naming the file and the reason.
+struct UnreadableImage : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+// A file that cannot be written. what() is one line naming the file and the reason.
+struct UnwritableImage : UnwritableFile {
+  using UnwritableFile::UnwritableFile;
+};
+
+// Largest image accepted, in float values (width * height * channels): 2^30, 4 GiB.
+inline constexpr std::uint64_t max_image_values = std::uint64_t(1) << 30;
+
+enum class ReadMode {
+  // The values the file holds, converted to float the way OpenImageIO converts them (8-bit
+  // v / 255, 16-bit v / 65535, half and float as is), alpha associated as OpenImageIO
+  // delivers it; sRGB integer data stays sRGB-encoded. This is what idiff compares.
+  as_stored,
+  // Linear light, alpha associated: sRGB integer data is decoded (colour, not colour times
+  // alpha, is what the curve applies to) and then multiplied by its alpha. Float data (EXR)
+  // is linear and associated already. This is what resampling and drawing need.
+  linear,
+};
+
+// What the file was, for writing a result like it.
+struct FileFormat {
+  std::string name;  // OpenImageIO's format name: "png", "openexr", ...
+  int bits = 8;      // bits per stored value
+};
+
+Image read_image(const std::string& path, ReadMode mode = ReadMode::as_stored, FileFormat* format = nullptr);
+
+struct WriteOptions {
+  int bits = 8;              // integer formats: 8 or 16 (PNG); float formats are float32
+  std::string software;      // "splinefig <version>" when empty
+  std::string description;   // ImageDescription, e.g. the spec name; none when empty
+};
+
+// Writes `im` to `path`, the format chosen by the extension:
+//   .png: 8 or 16 bits per channel, 1 to 4 channels, straight alpha, sRGB-encoded. Linear
+//     images are encoded (8 bits: linear_to_srgb8, exact); sRGB images are stored as they are.
+//     Values are clamped to [0, 1]; NaN is stored as 0.
+//   .exr (and .tif, .tiff): float32, linear, associated alpha; sRGB images are decoded first.
+// Throws UnwritableImage (naming the path) for any other extension or any failure.
+void write_image(const std::string& path, const Image& im, const WriteOptions& options = {});
+
+// Throws UnreadableImage unless `path` is a structurally complete PNG (exposed for tests).
+void check_png_structure(const std::string& path);
+
+}  // namespace splinefig

@@ -1,0 +1,166 @@
+// Atomic file publication with signal-safe cleanup of temporary files (see atomic_file.hpp).
+#include <splinefig/image/atomic_file.hpp>
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace splinefig {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Temporary files being written, for the signal handler. A slot is free (0), being filled or
+// emptied (1) or holds a file to remove (2); the handler only reads slots in state 2, and
+// only async-signal-safe calls are made there.
+struct Slot {
+  std::atomic<int> state{0};
+  int dirfd = -1;
+  char name[256] = {};
+};
+constexpr int kSlots = 64;
+Slot g_slots[kSlots];
+
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+struct sigaction g_previous[3];
+
+extern "C" void remove_temporaries_and_reraise(int sig) {
+  const int saved = errno;
+  for (Slot& s : g_slots)
+    if (s.state.load(std::memory_order_acquire) == 2) ::unlinkat(s.dirfd, s.name, 0);
+  for (int i = 0; i < 3; ++i)
+    if (kSignals[i] == sig) ::sigaction(sig, &g_previous[i], nullptr);
+  errno = saved;
+  ::raise(sig);  // delivered when this handler returns, to the previous action
+}
+
+void install_handlers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int i = 0; i < 3; ++i) {
+      struct sigaction current {};
+      if (::sigaction(kSignals[i], nullptr, &current) != 0) continue;
+      if (!(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_IGN) continue;
+      g_previous[i] = current;
+      struct sigaction sa {};
+      sa.sa_handler = remove_temporaries_and_reraise;
+      sigemptyset(&sa.sa_mask);
+      sa.sa_flags = 0;
+      ::sigaction(kSignals[i], &sa, nullptr);
+    }
+  });
+}
+
+// Registers a temporary file with the signal handler; a no-op when all slots are taken.
+class Registration {
+ public:
+  Registration(int dirfd, const std::string& name) {
+    if (name.size() >= sizeof(Slot::name)) return;
+    for (Slot& s : g_slots) {
+      int expected = 0;
+      if (s.state.compare_exchange_strong(expected, 1, std::memory_order_acquire)) {
+        s.dirfd = dirfd;
+        std::memcpy(s.name, name.c_str(), name.size() + 1);
+        s.state.store(2, std::memory_order_release);
+        slot_ = &s;
+        return;
+      }
+    }
+  }
+  ~Registration() {
+    if (!slot_) return;
+    slot_->state.store(1, std::memory_order_release);
+    slot_->dirfd = -1;
+    slot_->name[0] = 0;
+    slot_->state.store(0, std::memory_order_release);
+  }
+  Registration(const Registration&) = delete;
+  Registration& operator=(const Registration&) = delete;
+
+ private:
+  Slot* slot_ = nullptr;
+};
+
+std::string reason(int err) { return std::strerror(err); }
+
+struct Fd {
+  int fd = -1;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+std::string temporary_name(const std::string& filename, long pid, unsigned long n) {
+  // 1 + 200 + ".splinefig-" (11) + pid (<= 20) + "-" + n (<= 20) + ".tmp" (4) < 256.
+  std::string name = "." + filename.substr(0, 200);
+  name += ".splinefig-" + std::to_string(pid) + "-" + std::to_string(n) + ".tmp";
+  return name;
+}
+
+void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes) {
+  static std::atomic<unsigned long> counter{0};
+  const fs::path target(path);
+  const std::string filename = target.filename().string();
+  if (filename.empty() || filename == "." || filename == "..")
+    throw UnwritableFile(path + ": not a file name");
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+
+  install_handlers();
+  Fd d;
+  d.fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (d.fd < 0) throw UnwritableFile(path + ": cannot open its directory (" + reason(errno) + ")");
+
+  std::string tmp;
+  Fd f;
+  for (int attempt = 0; attempt < 100 && f.fd < 0; ++attempt) {
+    tmp = temporary_name(filename, long(::getpid()), counter++);
+    f.fd = ::openat(d.fd, tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (f.fd < 0 && errno != EEXIST) throw UnwritableFile(path + ": cannot create a file there (" + reason(errno) + ")");
+  }
+  if (f.fd < 0) throw UnwritableFile(path + ": cannot create a unique temporary file");
+
+  Registration reg(d.fd, tmp);
+  auto fail = [&](const std::string& what, int err) {
+    ::close(f.fd);
+    f.fd = -1;
+    ::unlinkat(d.fd, tmp.c_str(), 0);
+    throw UnwritableFile(path + ": " + what + " (" + reason(err) + ")");
+  };
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(f.fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("write failed", errno);
+    }
+    if (n == 0) fail("write failed", EIO);
+    done += std::size_t(n);
+  }
+  if (::fsync(f.fd) != 0) fail("write failed", errno);
+  const int fd = f.fd;
+  f.fd = -1;
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlinkat(d.fd, tmp.c_str(), 0);
+    throw UnwritableFile(path + ": write failed (" + reason(err) + ")");
+  }
+  if (::renameat(d.fd, tmp.c_str(), d.fd, filename.c_str()) != 0) {
+    const int err = errno;
+    ::unlinkat(d.fd, tmp.c_str(), 0);
+    throw UnwritableFile(path + ": cannot move the finished file into place (" + reason(err) + ")");
+  }
+  // The rename itself reaches the disk with the directory; some file systems cannot sync one.
+  if (::fsync(d.fd) != 0 && errno != EINVAL && errno != EROFS)
+    throw UnwritableFile(path + ": written, but its directory could not be synced (" + reason(errno) + ")");
+}
+
+}  // namespace splinefig

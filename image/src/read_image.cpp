@@ -1,0 +1,130 @@
+// Strict image reading through OpenImageIO (see io.hpp).
+#include <splinefig/image/io.hpp>
+#include <splinefig/image/srgb.hpp>
+
+#include "one_line.hpp"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+namespace splinefig {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::one_line;
+
+bool has_png_signature(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char head[8] = {};
+  in.read(reinterpret_cast<char*>(head), 8);
+  static constexpr unsigned char signature[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+  return in.gcount() == 8 && std::memcmp(head, signature, 8) == 0;
+}
+
+bool iequals(const std::string& a, const std::string& b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return std::tolower(x) == std::tolower(y); });
+}
+
+[[noreturn]] void unreadable(const std::string& path, const std::string& why) {
+  throw UnreadableImage(path + ": " + (why.empty() ? std::string("unknown error") : why));
+}
+
+// Colour channels of straight (unassociated) values: sRGB-decoded when `srgb`, then
+// multiplied by alpha when `associate`.
+void to_linear_associated(Image& im, bool srgb, bool associate, int bits) {
+  const auto& table = srgb8_decode_table();
+  const int C = im.channels, a = im.alpha_channel;
+  for (std::size_t p = 0; p < im.pixels.size(); p += std::size_t(C)) {
+    float* px = im.pixels.data() + p;
+    const float alpha = (associate && a >= 0) ? px[a] : 1.0f;
+    for (int c = 0; c < C; ++c) {
+      if (c == a) continue;
+      float v = px[c];
+      if (srgb)
+        v = bits == 8 ? table[std::size_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f))]
+                      : static_cast<float>(srgb_to_linear(static_cast<double>(v)));
+      px[c] = v * alpha;
+    }
+  }
+}
+
+}  // namespace
+
+Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) unreadable(path, "no such file");
+  if (fs::is_directory(st)) unreadable(path, "is a directory");
+  if (!fs::is_regular_file(st)) unreadable(path, "not a regular file");
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe) unreadable(path, std::string("cannot open file (") + std::strerror(errno) + ")");
+  }
+  if (has_png_signature(path)) check_png_structure(path);
+
+  try {
+    OIIO::ImageSpec config;
+    // Linear reading associates alpha itself, after decoding the straight values.
+    if (mode == ReadMode::linear) config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(path, &config);
+    if (!in) unreadable(path, one_line(OIIO::geterror()));
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.deep) unreadable(path, "deep images are not supported");
+    if (spec.depth > 1) unreadable(path, "volume images are not supported");
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+      unreadable(path, "empty image (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ", " +
+                           std::to_string(spec.nchannels) + " channels)");
+    const std::uint64_t values = std::uint64_t(spec.width) * std::uint64_t(spec.height) * std::uint64_t(spec.nchannels);
+    if (values > max_image_values)
+      unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
+                           std::to_string(spec.nchannels) + " values, limit 2^30)");
+    Image im;
+    im.width = spec.width;
+    im.height = spec.height;
+    im.channels = spec.nchannels;
+    im.x = spec.x;
+    im.y = spec.y;
+    im.channel_names = spec.channelnames;
+    im.channel_names.resize(std::size_t(im.channels));
+    const auto defaults = default_channel_names(im.channels);
+    for (int c = 0; c < im.channels; ++c)
+      if (im.channel_names[std::size_t(c)].empty()) im.channel_names[std::size_t(c)] = defaults[std::size_t(c)];
+    im.alpha_channel = spec.alpha_channel < im.channels ? spec.alpha_channel : -1;
+    const bool integer = !spec.format.is_floating_point();
+    const bool srgb = integer && !iequals(spec.get_string_attribute("oiio:ColorSpace"), "linear");
+    im.encoding = srgb ? Encoding::srgb : Encoding::linear;
+    const int bits = int(spec.format.size()) * 8;
+    if (format) *format = FileFormat{in->format_name(), bits};
+    try {
+      im.pixels.resize(std::size_t(values));
+    } catch (const std::bad_alloc&) {
+      unreadable(path, "image too large to hold in memory");
+    }
+    const bool ok = in->read_image(0, 0, 0, im.channels, OIIO::TypeFloat, im.pixels.data());
+    const std::string msg = in->has_error() ? in->geterror() : std::string();
+    if (!ok || !msg.empty()) unreadable(path, one_line(msg.empty() ? "cannot read pixel data" : msg));
+    const bool straight = spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
+    in->close();
+    if (mode == ReadMode::linear && (srgb || straight)) {
+      to_linear_associated(im, srgb, straight, bits);
+      im.encoding = Encoding::linear;
+    }
+    return im;
+  } catch (const UnreadableImage&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    unreadable(path, "image too large to hold in memory");
+  } catch (const std::exception& e) {
+    unreadable(path, one_line(e.what()));
+  }
+}
+
+}  // namespace splinefig

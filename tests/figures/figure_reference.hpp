@@ -1,0 +1,28 @@
+#pragma once
+// A built-in figure, rendered at 1x in this process, against tests/reference/figures/NAME.png
+// (tests/reference_check.hpp).
+#include "reference_check.hpp"
+
+#include <splinefig/figures/figure.hpp>
+#include <splinefig/figures/spec.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace figtest {
+
+inline splinefig::Image render_builtin_figure(const std::string& name) {
+  const splinefig::figures::FigureSpec spec =
+      splinefig::figures::load_spec(std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/" + name + ".toml");
+  return splinefig::figures::render_figure(spec, {1, 0}).image;
+}
+
+inline void check_figure_reference(const std::string& name) {
+  INFO("figure " << name);
+  CHECK_THAT(render_builtin_figure(name),
+             splinefig::testing::MatchesReference(reference_check::path("figures/" + name + ".png"),
+                                                  reference_check::figure()));
+}
+
+}  // namespace figtest

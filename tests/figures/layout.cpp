@@ -1,0 +1,55 @@
+// The panel grid: explicit and automatic cells, and the boxes they give.
+#include <catch2/catch.hpp>
+
+#include <splinefig/figures/figure.hpp>
+
+using namespace splinefig::figures;
+
+namespace {
+
+bool overlap(const AxesInfo& a, const AxesInfo& b) {
+  return a.pixel_box[0] < b.pixel_box[2] && b.pixel_box[0] < a.pixel_box[2] && a.pixel_box[1] < b.pixel_box[3] &&
+         b.pixel_box[1] < a.pixel_box[3];
+}
+
+}  // namespace
+
+TEST_CASE("layout: automatic placement skips cells that an explicit cell claimed") {
+  // Three panels in a 1x3 grid: the first asks for the middle cell, the other two are placed
+  // automatically and must take the left and the right cells, in reading order.
+  const FigureSpec spec = parse_spec(
+      "[canvas]\nwidth = 600\nheight = 200\n[layout]\nrows = 1\ncols = 3\n"
+      "[[axes]]\ncell = [0, 1]\nx_range = [0, 1]\ny_range = [0, 1]\n"
+      "[[axes]]\nx_range = [0, 1]\ny_range = [0, 1]\n"
+      "[[axes]]\nx_range = [0, 1]\ny_range = [0, 1]\n",
+      "layout.toml");
+  const FigureInfo info = layout_figure(spec);
+  REQUIRE(info.axes.size() == 3);
+  for (size_t i = 0; i < 3; ++i)
+    for (size_t j = i + 1; j < 3; ++j) {
+      INFO("panels " << i << " and " << j);
+      CHECK_FALSE(overlap(info.axes[i], info.axes[j]));
+    }
+  // Cells are 600 - 2*16 - 2*24 = 520 / 3 wide: left [16, 189.3], middle [213.3, 386.7],
+  // right [410.7, 584]; each plot box lies inside its own cell.
+  const double w = (600.0 - 2 * 16 - 2 * 24) / 3;
+  auto inside_cell = [&](const AxesInfo& a, int col) {
+    const double left = 16 + col * (w + 24), right = left + w;
+    return a.pixel_box[0] >= left - 1e-9 && a.pixel_box[2] <= right + 1e-9;
+  };
+  CHECK(inside_cell(info.axes[0], 1));
+  CHECK(inside_cell(info.axes[1], 0));
+  CHECK(inside_cell(info.axes[2], 2));
+}
+
+TEST_CASE("layout: a grid with more automatic panels than free cells is an error naming the panel") {
+  std::string msg;
+  try {
+    parse_spec("[layout]\nrows = 1\ncols = 2\n[[axes]]\ncell = [0, 0]\n[[axes]]\n[[axes]]\n", "full.toml");
+  } catch (const SpecFileError& e) {
+    msg = e.what();
+  }
+  CAPTURE(msg);
+  CHECK(msg.rfind("full.toml:7: axes", 0) == 0);
+  CHECK(msg.find("no free cell") != std::string::npos);
+}
