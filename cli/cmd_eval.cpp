@@ -8,9 +8,11 @@
 #include <splinefig/spline/knot_spacing.hpp>
 #include <splinefig/spline/local_beta.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
-
 #include <iostream>
+#include <vector>
 
 namespace {
 
@@ -47,6 +49,71 @@ void check_size(long double points, int dim, const std::string& flag) {
   if (points * dim > max_numbers)
     throw Failure(flag + ": " + std::to_string(static_cast<long long>(points)) + " points of dimension " +
                   std::to_string(dim) + " would be more than " + std::to_string(max_numbers) + " numbers");
+}
+
+// The input knots (numbered from 1 as read) that piece p of c uses: "knots 2..5", or a list
+// where a closed curve wraps around ("knots 5, 1, 2, 3").
+std::string piece_knots(const Curve& c, std::size_t p) {
+  const std::size_t n = c.knot_count, h = static_cast<std::size_t>(c.degree() - 1) / 2;
+  std::vector<std::size_t> ks;
+  for (std::size_t j = p; j <= p + static_cast<std::size_t>(c.degree()); ++j) {
+    std::size_t k = j;  // the control point's knot, 0-based
+    if (c.ends == Ends::doubled) k = j == 0 ? 0 : std::min(j - 1, n - 1);
+    if (c.ends == Ends::closed) k = (j + n * (h + 1) - h) % n;
+    if (ks.empty() || ks.back() != k + 1) ks.push_back(k + 1);
+  }
+  bool run = true;
+  for (std::size_t i = 1; i < ks.size(); ++i) run = run && ks[i] == ks[i - 1] + 1;
+  if (run) return ks.size() == 1 ? "knot " + std::to_string(ks[0]) : "knots " + std::to_string(ks.front()) + ".." + std::to_string(ks.back());
+  std::string s = "knots ";
+  for (std::size_t i = 0; i < ks.size(); ++i) s += (i ? ", " : "") + std::to_string(ks[i]);
+  return s;
+}
+
+// Before measuring length: bounds on |X|, |X'| and |X''| of every piece, from its Horner
+// coefficients, whose squares must stay in range (beyond it the length integral and the
+// polygon's chords overflow). Names the piece's knots otherwise.
+void check_measurable(const Curve& c, const std::string& spacing) {
+  const int n = c.degree();
+  const std::size_t dim = static_cast<std::size_t>(c.dim());
+  std::vector<double> a(static_cast<std::size_t>(n + 1) * dim);
+  for (std::size_t p = 0; p < c.segments(); ++p) {
+    piece_coefficients(c, p, a);
+    double sum = 0;
+    for (std::size_t d = 0; d < dim; ++d) {
+      double x = 0, v = 0, acc = 0;
+      for (int r = 0; r <= n; ++r) {
+        const double m = std::abs(a[static_cast<std::size_t>(r) * dim + d]), e = n - r;
+        x += m, v += e * m, acc += e * (e - 1) * m;
+      }
+      const double bound = std::max({2 * x, v, acc});
+      sum += bound * bound;
+    }
+    if (!std::isfinite(sum))
+      throw Failure("stdin: " + piece_knots(c, p) + " are too large for --spacing " + spacing +
+                    ": the curve's length there overflows the range of a double");
+  }
+}
+
+// No non-finite number is printed: the first one (coords[k]) names the knots of its piece and
+// the basis.
+void check_finite(const Points& out, std::size_t k, const Curve& c, const Options& o, int derivative, int grain,
+                  const std::vector<double>& ts) {
+  if (k == out.coords.size()) return;
+  const std::size_t row = k / static_cast<std::size_t>(out.dim);
+  double t = 0;
+  std::size_t piece = 0;
+  if (!ts.empty()) {
+    t = ts[row];
+    piece = locate(c, t).piece;
+  } else {
+    piece = std::min(row / static_cast<std::size_t>(grain), c.segments() - 1);
+    t = static_cast<double>(row) / grain;
+  }
+  const char* what = derivative == 0 ? "the curve" : derivative == 1 ? "its first derivative" : "its second derivative";
+  throw Failure("stdin: " + piece_knots(c, piece) + " with --basis " + o.basis +
+                (o.betas.empty() ? "" : " and --betas " + o.betas) + ": " + what +
+                " overflows the range of a double at t = " + cli::format_number(t));
 }
 
 int run(const Options& o) {
@@ -87,18 +154,25 @@ int run(const Options& o) {
 
   const long double sampled = static_cast<long double>(c.segments()) * grain + 1;
   Points out;
+  std::vector<double> ts;  // the parameters of the rows, where not grain per piece
   if (o.spacing == "arclength") {
     check_size(count, c.dim(), "--count " + o.count);
-    out = evaluate_at(c, evenly_spaced_parameters(c, static_cast<std::size_t>(count)), derivative);
+    check_measurable(c, o.spacing);
+    ts = evenly_spaced_parameters(c, static_cast<std::size_t>(count));
   } else if (o.spacing == "polygon") {
     check_size(count, c.dim(), "--count " + o.count);
     check_size(sampled, c.dim(), "--grain " + o.grain);
-    out = evaluate_at(c, polygon_evenly_spaced_parameters(c, grain, static_cast<std::size_t>(count)), derivative);
+    check_measurable(c, o.spacing);
+    ts = polygon_evenly_spaced_parameters(c, grain, static_cast<std::size_t>(count));
   } else {
     check_size(sampled, c.dim(), "--grain " + o.grain);
     out = companion ? sample_companion(o, c, grain, derivative) : sample(c, grain, derivative);
   }
-  cli::write_stdout(cli::format_points(out));
+  if (!ts.empty()) out = evaluate_at(c, ts, derivative);
+  std::size_t non_finite = 0;
+  const std::string text = cli::format_points(out, non_finite);
+  check_finite(out, non_finite, c, o, derivative, grain, ts);
+  cli::write_stdout(text);
   return 0;
 }
 

@@ -5,7 +5,10 @@
 
 #include <splinefig/spline/interp.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <span>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,6 +46,23 @@ std::istringstream slurp_stdin() {
   return std::istringstream(std::move(text));
 }
 
+// The spline is linear in its data, so a result that is not finite (from finite data) means
+// the 1-4-1 solve or the curve overflowed: name the data point (or end velocity) of largest
+// magnitude, the one that drives it out of range.
+void check_finite(bool finite, const Points& data, const std::vector<double>& v, const std::vector<double>& w) {
+  if (finite) return;
+  std::size_t at = 0;
+  double big = -1;
+  for (std::size_t k = 0; k < data.coords.size(); ++k)
+    if (std::abs(data.coords[k]) > big) big = std::abs(data.coords[k]), at = k;
+  std::string what = "data point " + std::to_string(at / static_cast<std::size_t>(data.dim) + 1);
+  for (const auto& [vel, flag] : {std::pair{&v, "--start-velocity"}, std::pair{&w, "--end-velocity"}})
+    for (const double x : *vel)
+      if (std::abs(x) > big) big = std::abs(x), what = flag;
+  throw Failure("stdin: the spline overflows the range of a double: " + what + " (a coordinate " + format_number(big) +
+                ") is too large to interpolate");
+}
+
 int run(const Options& o) {
   if (o.ends != "relaxed" && o.ends != "clamped" && o.ends != "periodic")
     throw Failure("--ends: unknown value '" + o.ends + "' (known: relaxed, clamped, periodic)");
@@ -61,11 +81,12 @@ int run(const Options& o) {
     throw Failure("stdin: " + std::to_string(data.size()) + (data.size() == 1 ? " data point" : " data points") +
                   ", --ends " + o.ends + " needs at least " + std::to_string(need));
   Interpolant s;
+  std::vector<double> v, w;  // clamped end velocities
   if (o.ends == "relaxed") {
     s = interpolate_relaxed(data);
   } else if (o.ends == "clamped") {
-    const auto v = velocity(o.start_velocity, "--start-velocity", data.dim);
-    const auto w = velocity(o.end_velocity, "--end-velocity", data.dim);
+    v = velocity(o.start_velocity, "--start-velocity", data.dim);
+    w = velocity(o.end_velocity, "--end-velocity", data.dim);
     s = interpolate_clamped(data, v, w);
   } else {
     const std::size_t n = data.size() - 1;
@@ -78,9 +99,11 @@ int run(const Options& o) {
 
   std::string out;
   if (o.output == "bspline") {
+    check_finite(first_non_finite(s.control.coords) == s.control.coords.size(), data, v, w);
     out = format_points(s.control);
   } else if (o.output == "bezier") {
     const BezierSpline b = bezier_pieces(s);
+    check_finite(first_non_finite(b.points.coords) == b.points.coords.size(), data, v, w);
     const std::size_t dim = static_cast<std::size_t>(b.points.dim);
     out.reserve(b.pieces() * 4 * dim * 24);
     for (std::size_t i = 0; i < b.pieces(); ++i) {
@@ -93,7 +116,10 @@ int run(const Options& o) {
       throw Failure("--grain " + std::to_string(grain) + " with " + std::to_string(data.size()) +
                     " data points would write " + std::to_string(static_cast<long long>(rows)) +
                     " points (at most 100000000)");
-    out = format_points(sample(s, grain));
+    const Points curve = sample(s, grain);
+    std::size_t non_finite = 0;
+    out = format_points(curve, non_finite);
+    check_finite(non_finite == curve.coords.size(), data, v, w);
   }
   write_stdout(out);
   return 0;

@@ -7,6 +7,8 @@
 #include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace {
 
@@ -21,6 +23,26 @@ struct Options {
 
 constexpr double max_rows = 1e8;
 
+// A number about to be printed, refused if it is not finite (the kernel overflows there).
+double finite(double v, const std::string& basis, const char* what, double at) {
+  if (!std::isfinite(v))
+    throw Failure("--basis " + basis + ": " + what + cli::format_number(at) + " overflows the range of a double");
+  return v;
+}
+
+// --report: every measure must be finite to be printed.
+void check_report(const FilterReport& r, const std::string& basis) {
+  const std::pair<const char*, double> measures[] = {
+      {"integral", r.integral}, {"energy", r.energy}, {"response_at_0", r.response_at_0},
+      {"response_at_0.25", r.response_at_quarter}, {"response_at_nyquist", r.response_at_nyquist},
+      {"passband_droop_at_0.25", r.droop}, {"stopband_leakage", r.leakage}, {"step_overshoot", r.step.overshoot},
+      {"step_undershoot", r.step.undershoot}, {"step_rise_10_90", r.step.rise},
+      {"mitchell_netravali B", r.bc ? r.bc->b : 0.0}, {"mitchell_netravali C", r.bc ? r.bc->c : 0.0}};
+  for (const auto& [name, v] : measures)
+    if (!std::isfinite(v))
+      throw Failure("--basis " + basis + ": the filter's " + name + " overflows the range of a double");
+}
+
 Kernel parse(const Options& o) {
   try {
     return parse_kernel(o.basis);
@@ -34,7 +56,9 @@ Kernel parse(const Options& o) {
 int run_filter(const Options& o) {
   const Kernel f = parse(o);
   if (o.report) {
-    cli::write_stdout(report_text(analyse(f)));
+    const FilterReport r = analyse(f);
+    check_report(r, o.basis);
+    cli::write_stdout(report_text(r));
     return 0;
   }
   const double f0 = o.range_given ? cli::parse_number(o.from, "--from") : 0.0;
@@ -50,7 +74,7 @@ int run_filter(const Options& o) {
     const double fr = f0 + static_cast<double>(i) * step;
     cli::append_number(text, fr);
     text += ',';
-    cli::append_number(text, response(f, fr));
+    cli::append_number(text, finite(response(f, fr), o.basis, "|K(f)| at f = ", fr));
     text += '\n';
   }
   cli::write_stdout(text);
@@ -75,7 +99,7 @@ int run(const Options& o) {
     const double x = x0 + static_cast<double>(i) * step;
     cli::append_number(text, x);
     text += ',';
-    cli::append_number(text, k(x));
+    cli::append_number(text, finite(k(x), o.basis, "k(x) at x = ", x));
     text += '\n';
   }
   cli::write_stdout(text);

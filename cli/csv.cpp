@@ -150,10 +150,30 @@ void append_point(std::string& out, std::span<const double> p) {
 }
 
 std::string format_points(const Points& p) {
+  std::size_t non_finite = 0;
+  return format_points(p, non_finite);
+}
+
+std::string format_points(const Points& p, std::size_t& non_finite) {
   std::string s;
   s.reserve(p.coords.size() * 20);
-  for (size_t i = 0; i < p.size(); ++i) append_point(s, p[i]);
+  non_finite = p.coords.size();
+  for (size_t i = 0; i < p.size(); ++i) {
+    const auto q = p[i];
+    const std::size_t k = first_non_finite(q);  // q is in cache: no second pass over memory
+    if (k < q.size()) {
+      non_finite = i * q.size() + k;
+      return s;
+    }
+    append_point(s, q);
+  }
   return s;
+}
+
+std::size_t first_non_finite(std::span<const double> v) {
+  std::size_t i = 0;
+  while (i < v.size() && std::isfinite(v[i])) ++i;
+  return i;
 }
 
 void write_stdout(std::string_view text) {

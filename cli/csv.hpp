@@ -39,6 +39,15 @@ std::string format_number(double v);
 // "x,y,z\n"
 void append_point(std::string& out, std::span<const double> p);
 std::string format_points(const Points& p);
+// The same, also setting `non_finite` to the index (into p.coords) of the first value that is
+// not finite (the text then stops before it), or p.coords.size(). Checked while formatting,
+// so a large output is read once.
+std::string format_points(const Points& p, std::size_t& non_finite);
+
+// The index of the first value that is not finite (NaN, +-inf), or v.size() if all are.
+// Every command checks its numbers with it before writing: a non-finite result is an error
+// naming the input that caused it, never printed.
+std::size_t first_non_finite(std::span<const double> v);
 
 // Writes text to stdout and flushes; throws Failure if the write fails (disk full, closed pipe).
 void write_stdout(std::string_view text);

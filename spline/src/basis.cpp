@@ -116,13 +116,23 @@ double parse_number(std::string_view name, std::string_view key, std::string_vie
   const char* last = text.data() + text.size();
   if (!text.empty() && *first == '+') ++first;
   auto [ptr, ec] = std::from_chars(first, last, v);
+  const std::string what = std::string(name) + ": value of '" + std::string(key) + "' ";
+  if (!text.empty() && first != last && ec == std::errc::result_out_of_range && ptr == last)
+    throw SpecError(what + "is out of the range of a double: '" + std::string(text) + "'");
   if (text.empty() || ec != std::errc() || ptr != last)
-    throw SpecError(std::string(name) + ": value of '" + std::string(key) + "' is not a number: '" +
-                    std::string(text) + "'");
-  if (!std::isfinite(v))
-    throw SpecError(std::string(name) + ": value of '" + std::string(key) + "' is not finite: '" +
-                    std::string(text) + "'");
+    throw SpecError(what + "is not a number: '" + std::string(text) + "'");
+  if (!std::isfinite(v)) throw SpecError(what + "is not finite: '" + std::string(text) + "'");
   return v;
+}
+
+// A matrix whose entries overflow (e.g. cardinal:a=1e308, where 2a is infinite) evaluates to
+// NaN: refuse it, naming the parameters as given.
+Basis finite_matrix(Basis b, std::string_view name, const std::string& given) {
+  for (const double v : b.m)
+    if (!std::isfinite(v))
+      throw SpecError(std::string(name) + ": " + given +
+                      " is too large: the matrix has entries beyond the range of a double");
+  return b;
 }
 
 }  // namespace
@@ -168,9 +178,19 @@ Basis parse_basis(std::string_view spec) {
     take({});
     return catmull_rom();
   }
+  // The parameters as the user gave them (the default where not given), for messages.
+  auto given = [&](const char* key) { return key + std::string("=") + (raw.count(key) ? raw[key] : fmt(params[key])); };
+  // Cardinal C_a and Duff's B_a have the tangent a (x1 - x-1) resp. a/2 (x1 - x-1) at knot x0: a < 0
+  // turns it backwards at every knot; a = 0 stops there (the control polygon, their common limit).
+  auto forward = [&](const char* family, const char* range) {
+    if (params["a"] < 0)
+      throw SpecError(std::string(family) + ": " + given("a") +
+                      " is negative: the tangent at every knot would point backwards (a >= 0; " + range + ")");
+  };
   if (name == "cardinal") {
     take({{"a", 0.5}});
-    return cardinal(params["a"]);
+    forward("cardinal", "a = 0 is the control polygon, 0.5 Catmull-Rom");
+    return finite_matrix(cardinal(params["a"]), name, given("a"));
   }
   if (name == "bspline") {
     take({});
@@ -178,11 +198,27 @@ Basis parse_basis(std::string_view spec) {
   }
   if (name == "tensioned-bspline") {
     take({{"a", 1.0}});
-    return tensioned_bspline(params["a"]);
+    forward("tensioned-bspline", "a = 1 is the B-spline, a -> 0 the control polygon");
+    return finite_matrix(tensioned_bspline(params["a"]), name, given("a"));
   }
   if (name == "beta") {
     take({{"b1", 1.0}, {"b2", 0.0}});
-    return beta(params["b1"], params["b2"]);
+    const double b1 = params["b1"], b2 = params["b2"];
+    const std::string both = given("b1") + "," + given("b2");
+    const double s2 = b1 * b1, s3 = s2 * b1;
+    const double d = b2 + 2 * s3 + 4 * s2 + 4 * b1 + 2;  // as beta() computes it
+    if (!std::isfinite(d)) throw SpecError("beta: " + both + " is too large: the denominator d overflows");
+    // b1 is the ratio of the velocities right and left of every joint; with b1 >= 0, d < 0 makes
+    // the velocity at the knots of a straight, evenly spaced polygon point backwards.
+    if (d != 0 && b1 < 0)
+      throw SpecError("beta: " + given("b1") +
+                      " is negative: b1 is the ratio of the velocities after and before every joint, so the "
+                      "curve would reverse at each one (b1 >= 0)");
+    if (d < 0)
+      throw SpecError("beta: " + both +
+                      ": the denominator d = b2 + 2b1^3 + 4b1^2 + 4b1 + 2 is negative, so the tangent at every "
+                      "knot would point backwards (b2 > -(2b1^3 + 4b1^2 + 4b1 + 2))");
+    return finite_matrix(beta(b1, b2), name, both);  // beta() refuses d = 0
   }
   if (name == "uniform-bspline") {
     take({{"degree", 3.0}});

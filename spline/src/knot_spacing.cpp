@@ -1,8 +1,12 @@
 // Non-uniformly spaced Catmull-Rom pieces in Hermite form.
 #include <splinefig/spline/knot_spacing.hpp>
 
+#include "open_cubic_sampling.hpp"
+
+#include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +28,26 @@ std::optional<KnotSpacing> parse_knot_spacing(std::string_view name) {
   return std::nullopt;
 }
 
+namespace {
+
+// |knot j - knot j-1| without overflow or underflow of the squares (infinite only beyond the
+// range of a double).
+double distance(const Points& knots, std::size_t j) {
+  const std::size_t dim = static_cast<std::size_t>(knots.dim);
+  double scale = 0;
+  for (std::size_t c = 0; c < dim; ++c)
+    scale = std::max(scale, std::abs(knots.coords[j * dim + c] - knots.coords[(j - 1) * dim + c]));
+  if (!(scale > 0) || !std::isfinite(scale)) return scale;
+  double s2 = 0;
+  for (std::size_t c = 0; c < dim; ++c) {
+    const double d = (knots.coords[j * dim + c] - knots.coords[(j - 1) * dim + c]) / scale;
+    s2 += d * d;
+  }
+  return scale * std::sqrt(s2);
+}
+
+}  // namespace
+
 std::vector<double> knot_parameters(const Points& knots, double alpha) {
   const std::size_t n = knots.size(), dim = static_cast<std::size_t>(knots.dim);
   std::vector<double> tau(n, 0.0);
@@ -34,7 +58,10 @@ std::vector<double> knot_parameters(const Points& knots, double alpha) {
       d2 += d * d;
     }
     // |d|^alpha = (|d|^2)^(alpha/2); pow(0, 0) = 1 keeps uniform spacing for coincident knots.
-    tau[j] = tau[j - 1] + std::pow(d2, alpha / 2);
+    // Where |d|^2 overflows or underflows (|d| beyond about 1e154 or below 1e-154) |d| is
+    // taken in scaled form instead (which also gives 0 for coincident knots).
+    const bool in_range = std::isfinite(d2) && d2 >= std::numeric_limits<double>::min();
+    tau[j] = tau[j - 1] + (in_range ? std::pow(d2, alpha / 2) : std::pow(distance(knots, j), alpha));
   }
   return tau;
 }
@@ -78,19 +105,15 @@ void spaced_catmull_rom(const Points& knots, const std::vector<double>& tau, std
 }
 
 Points spaced_catmull_rom_curve(const Points& knots, double alpha, int grain, int derivative) {
-  const std::size_t n = knots.size();
-  if (n < 4) throw std::invalid_argument("a Catmull-Rom curve needs at least 4 knots, got " + std::to_string(n));
-  if (grain < 1) throw std::invalid_argument("grain must be at least 1, got " + std::to_string(grain));
   const std::vector<double> tau = knot_parameters(knots, alpha);
-  const std::size_t g = static_cast<std::size_t>(grain), dim = static_cast<std::size_t>(knots.dim);
-  Points out(knots.dim, (n - 3) * g + 1);
-  std::size_t row = 0;
-  for (std::size_t i = 1; i + 2 < n; ++i)
-    for (std::size_t j = 0; j < g; ++j, ++row)
-      spaced_catmull_rom(knots, tau, i, static_cast<double>(j) / static_cast<double>(g), derivative,
-                         std::span<double>(out.coords.data() + row * dim, dim));
-  spaced_catmull_rom(knots, tau, n - 3, 1.0, derivative, std::span<double>(out.coords.data() + row * dim, dim));
-  return out;
+  for (std::size_t j = 1; j < tau.size(); ++j)
+    if (!std::isfinite(tau[j]))
+      throw std::invalid_argument("the knot parameters overflow at knot " + std::to_string(j + 1) +
+                                  ": the knots are too far apart for this spacing");
+  return detail::sample_open_cubic("Catmull-Rom", knots.dim, knots.size(), grain,
+                                   [&](std::size_t i, double u, std::span<double> out) {
+                                     spaced_catmull_rom(knots, tau, i, u, derivative, out);
+                                   });
 }
 
 Points sample_spaced(const Curve& c, double alpha, int grain, int derivative) {

@@ -2,6 +2,8 @@
 // exactly by second-order forward mode (a value with its first two u-derivatives).
 #include <splinefig/spline/local_beta.hpp>
 
+#include "open_cubic_sampling.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -66,11 +68,20 @@ void validate_local_betas(const Points& knots, std::span<const ShapeParameters> 
       throw std::invalid_argument("local betas: knot " + std::to_string(j) + " has a non-finite b1 or b2");
   for (std::size_t j = 0; j + 1 < betas.size(); ++j) {
     const double b1 = std::min(betas[j].b1, betas[j + 1].b1), b2 = std::min(betas[j].b2, betas[j + 1].b2);
-    if (!(denominator(b1, b2) > 0))
+    const double d = denominator(b1, b2);
+    // d grows with b1 >= 0 and b2: its largest value between the knots is at the larger pair.
+    if (!std::isfinite(denominator(std::max(betas[j].b1, betas[j + 1].b1), std::max(betas[j].b2, betas[j + 1].b2))))
+      throw std::invalid_argument("local betas: between knots " + std::to_string(j) + " and " + std::to_string(j + 1) +
+                                  " b1 or b2 is too large: the denominator d overflows");
+    if (!(d > 0))
       throw std::invalid_argument("local betas: between knots " + std::to_string(j) + " and " + std::to_string(j + 1) +
                                   " the Beta-spline denominator d = b2 + 2b1^3 + 4b1^2 + 4b1 + 2 can reach 0 "
                                   "(raise b1 or b2)");
   }
+  // b1 is the ratio of the velocities after and before a joint: below 0 the curve reverses there.
+  for (std::size_t j = 0; j < betas.size(); ++j)
+    if (betas[j].b1 < 0)
+      throw std::invalid_argument("local betas: knot " + std::to_string(j) + " has a negative b1 (b1 >= 0)");
 }
 
 void local_beta_point(const Points& knots, std::span<const ShapeParameters> betas, std::size_t i, double u,
@@ -96,19 +107,11 @@ void local_beta_point(const Points& knots, std::span<const ShapeParameters> beta
 }
 
 Points local_beta_curve(const Points& knots, std::span<const ShapeParameters> betas, int grain, int derivative) {
-  const std::size_t n = knots.size();
-  if (n < 4) throw std::invalid_argument("a Beta-spline curve needs at least 4 knots, got " + std::to_string(n));
-  if (grain < 1) throw std::invalid_argument("grain must be at least 1, got " + std::to_string(grain));
   validate_local_betas(knots, betas);
-  const std::size_t g = static_cast<std::size_t>(grain), dim = static_cast<std::size_t>(knots.dim);
-  Points out(knots.dim, (n - 3) * g + 1);
-  std::size_t row = 0;
-  for (std::size_t i = 1; i + 2 < n; ++i)
-    for (std::size_t j = 0; j < g; ++j, ++row)
-      local_beta_point(knots, betas, i, static_cast<double>(j) / static_cast<double>(g), derivative,
-                       std::span<double>(out.coords.data() + row * dim, dim));
-  local_beta_point(knots, betas, n - 3, 1.0, derivative, std::span<double>(out.coords.data() + row * dim, dim));
-  return out;
+  return detail::sample_open_cubic("Beta-spline", knots.dim, knots.size(), grain,
+                                   [&](std::size_t i, double u, std::span<double> out) {
+                                     local_beta_point(knots, betas, i, u, derivative, out);
+                                   });
 }
 
 std::vector<ShapeParameters> extend_betas(std::span<const ShapeParameters> betas, Ends ends) {

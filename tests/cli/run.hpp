@@ -1,6 +1,6 @@
 #pragma once
 // Runs the splinefig executable (SPLINEFIG_EXE) as a user would: arguments, text on stdin;
-// captures exit code, stdout and stderr through temporary files.
+// captures exit code, stdout and stderr through temporary files. Each run is limited to 300 s.
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
@@ -45,7 +45,8 @@ inline Run run(const std::vector<std::string>& args, const std::string& input = 
                    ("splinefig-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::filesystem::create_directories(dir);
   { std::ofstream(dir / "in", std::ios::binary) << input; }
-  std::string cmd = shell_quote(SPLINEFIG_EXE);
+  // A command that hangs fails its test (exit 124) instead of stalling the suite.
+  std::string cmd = "timeout 300 " + shell_quote(SPLINEFIG_EXE);
   const std::string out = stdout_path.empty() ? (dir / "out").string() : stdout_path;
   for (const auto& a : args) cmd.append(" ").append(shell_quote(a));
   cmd.append(" < ").append(shell_quote((dir / "in").string()));

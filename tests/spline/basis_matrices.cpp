@@ -17,6 +17,16 @@ void check_matrix(const Basis& b, const double (&expect)[4][4], double tol = 0) 
         CHECK(b(r, c) == Approx(expect[r][c]).margin(tol));
     }
 }
+
+// The SpecError message for a spec, or "no error".
+std::string msg(const char* spec) {
+  try {
+    parse_basis(spec);
+  } catch (const SpecError& e) {
+    return e.what();
+  }
+  return "no error";
+}
 }  // namespace
 
 TEST_CASE("Catmull-Rom matrix is the memo's C = 1/2 [...]") {
@@ -76,14 +86,6 @@ TEST_CASE("Kernel values: Catmull-Rom k(0)=1 and min -2/27 at 4/3, B-spline 2/3 
 }
 
 TEST_CASE("Invalid basis specs name what is wrong") {
-  auto msg = [](const char* s) {
-    try {
-      parse_basis(s);
-    } catch (const SpecError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   CHECK_THAT(msg("bezier"), Catch::Contains("unknown basis 'bezier'"));
   CHECK_THAT(msg("cardinal:b=1"), Catch::Contains("unknown parameter 'b'"));
   CHECK_THAT(msg("cardinal:a=nan"), Catch::Contains("not finite"));
@@ -93,6 +95,43 @@ TEST_CASE("Invalid basis specs name what is wrong") {
   CHECK_THAT(msg("uniform-bspline:degree=2.5"), Catch::Contains("not an integer"));
   CHECK_THAT(msg("uniform-bspline:degree=0"), Catch::Contains("out of range"));
   CHECK_THAT(msg("cardinal:a=1,a=2"), Catch::Contains("given twice"));
+}
+
+TEST_CASE("Spec parameters: negative tangents and overflow are refused, the polygon limits accepted") {
+  // Out of the range of a double is not "not a number".
+  CHECK(msg("cardinal:a=1e400") == "cardinal: value of 'a' is out of the range of a double: '1e400'");
+  CHECK_THAT(msg("uniform-bspline:degree=-1e999"), Catch::Contains("out of the range of a double"));
+  // Matrices whose entries overflow (2a, 9a, 2b2, b1^3 beyond 1.8e308) would evaluate to NaN.
+  CHECK(msg("cardinal:a=1e308") == "cardinal: a=1e308 is too large: the matrix has entries beyond the range of a double");
+  CHECK_THAT(msg("tensioned-bspline:a=1e308"), Catch::Contains("a=1e308 is too large"));
+  CHECK_THAT(msg("tensioned-bspline:a=-1e308"), Catch::Contains("negative"));
+  CHECK_THAT(msg("beta:b1=1e103"), Catch::Contains("b1=1e103,b2=0 is too large"));
+  CHECK_THAT(msg("beta:b2=1e308"), Catch::Contains("b1=1,b2=1e308 is too large"));
+  // The tangent at knot x0 is a (x1 - x-1) for C_a, a/2 (x1 - x-1) for B_a: a < 0 points it backwards.
+  CHECK_THAT(msg("cardinal:a=-1"), Catch::Contains("cardinal: a=-1 is negative: the tangent at every knot"));
+  CHECK_THAT(msg("cardinal:a=-1e-300"), Catch::Contains("negative"));
+  CHECK_THAT(msg("tensioned-bspline:a=-1"), Catch::Contains("tensioned-bspline: a=-1 is negative"));
+  // b1 is the velocity ratio at every joint: b1 < 0 reverses the curve there. b1 = -1, b2 = 0 has
+  // no matrix at all (d = 0); with b1 >= 0, b2 < -(2b1^3 + 4b1^2 + 4b1 + 2) makes d < 0.
+  CHECK_THAT(msg("beta:b1=-0.5,b2=0"), Catch::Contains("beta: b1=-0.5 is negative"));
+  CHECK_THAT(msg("beta:b1=-1,b2=0"), Catch::Contains("is zero"));
+  CHECK_THAT(msg("beta:b1=-1,b2=3"), Catch::Contains("negative"));
+  CHECK_THAT(msg("beta:b1=1,b2=-13"), Catch::Contains("the denominator d = b2 + 2b1^3 + 4b1^2 + 4b1 + 2 is negative"));
+  CHECK_THAT(msg("beta:b1=0,b2=-2.5"), Catch::Contains("is negative"));
+  CHECK_THAT(msg("beta:b1=0,b2=-2"), Catch::Contains("is zero"));
+
+  // Accepted: a = 1 and a = +1e300, every value the figures use, negative tension where d > 0.
+  for (const char* ok : {"cardinal:a=1", "cardinal:a=+1", "cardinal:a=1e300", "cardinal:a=-0", "tensioned-bspline:a=1",
+                         "tensioned-bspline:a=3", "tensioned-bspline:a=0.1", "beta:b1=0.2,b2=0", "beta:b1=3,b2=150",
+                         "beta:b1=1,b2=-11.9", "beta:b1=0,b2=-1.5", "beta:b1=1e-300"})
+    CHECK(msg(ok) == "no error");
+  // The a = 0 limits of C_a and B_a are both the control polygon traversed by the cubic Hermite
+  // blend 3u^2 - 2u^3 (zero tangents); b1 = b2 = 0 is the polygon traversed as u^3.
+  const double hermite[4][4] = {{0, 2, -2, 0}, {0, -3, 3, 0}, {0, 0, 0, 0}, {0, 1, 0, 0}};
+  check_matrix(parse_basis("cardinal:a=0"), hermite);
+  check_matrix(parse_basis("tensioned-bspline:a=0"), hermite);
+  const double cubed[4][4] = {{0, 0, -1, 1}, {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 1, 0}};
+  check_matrix(parse_basis("beta:b1=0,b2=0"), cubed);
 }
 
 TEST_CASE("Canonical specs read back to the same basis") {

@@ -7,6 +7,8 @@
 #include <splinefig/spline/local_beta.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -168,4 +170,46 @@ TEST_CASE("eval --knot-spacing and --betas errors name the flag or the file") {
   expect_error("eval --basis beta --betas /nonexistent/betas.csv", knots, "cannot open");
   std::ofstream(betas) << "1,0\n1,0\n";
   expect_error("eval --basis beta --betas '" + betas.string() + "'", knots, "2 (b1, b2) pairs for 7 knots");
+}
+
+TEST_CASE("eval --knot-spacing on knots whose squared distances overflow: the curve scales with its knots") {
+  // Spaced Catmull-Rom is invariant under scaling (its parameters scale with the knots), and
+  // powers of 2 scale exactly: at 2^600 |d|^2 overflows, at 2^-600 it underflows; |d| does not.
+  const std::string small = "0,0\n1,2\n3,3\n4,1\n6,0\n";
+  for (const int e : {600, -600}) {
+    std::string scaled;
+    for (const auto& row : rows(small)) {
+      char line[128];
+      std::snprintf(line, sizeof line, "%.17g,%.17g\n", std::ldexp(row[0], e), std::ldexp(row[1], e));
+      scaled += line;
+    }
+    for (const char* spacing : {"chordal", "centripetal"}) {
+      INFO(spacing << " at 2^" << e);
+      const Run a = run(std::string("eval --basis catmull-rom --grain 4 --knot-spacing ") + spacing, small);
+      const Run b = run(std::string("eval --basis catmull-rom --grain 4 --knot-spacing ") + spacing, scaled);
+      REQUIRE(a.code == 0);
+      REQUIRE(b.code == 0);
+      const auto ra = rows(a.out), rb = rows(b.out);
+      REQUIRE(ra.size() == rb.size());
+      for (std::size_t i = 0; i < ra.size(); ++i)
+        for (std::size_t c = 0; c < 2; ++c) CHECK(std::ldexp(rb[i][c], -e) == Approx(ra[i][c]).margin(1e-12));
+    }
+  }
+  // Knots 2e308 apart: the distance itself is beyond a double.
+  expect_error("eval --basis catmull-rom --knot-spacing chordal", "0,0\n1e308,1\n-1e308,0\n3,1\n5,5\n",
+               "the knot parameters overflow at knot 3");
+}
+
+TEST_CASE("eval --betas: shape parameters that overflow the denominator or reverse the curve are refused") {
+  const std::string knots = "0,0\n1,2\n2,0\n3,2\n4,0\n5,2\n6,0\n";
+  const fs::path betas = scratch() / "betas-range.csv";
+  std::ofstream(betas) << "1,0\n1,0\n1e103,0\n1,0\n1,0\n1,0\n1,0\n";  // b1^3 = 1e309
+  expect_error("eval --basis beta --betas '" + betas.string() + "'", knots, "between knots 1 and 2 b1 or b2 is too large");
+  std::ofstream(betas) << "1,0\n1,0\n-0.5,0\n1,0\n1,0\n1,0\n1,0\n";
+  expect_error("eval --basis beta --betas '" + betas.string() + "'", knots, "knot 2 has a negative b1");
+  // b1 = 0 (the velocity after a joint stops) and negative tension with d > 0 are allowed.
+  std::ofstream(betas) << "1,0\n0,0\n1,0\n1,-5\n1,0\n1,0\n1,0\n";
+  const Run r = run("eval --basis beta --betas '" + betas.string() + "'", knots);
+  CHECK(r.code == 0);
+  CHECK(r.err.empty());
 }
