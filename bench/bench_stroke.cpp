@@ -112,7 +112,7 @@ double peak_rss_mb() {
 }
 
 // ---- splinefig -------------------------------------------------------------------------
-sr::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
+splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
                          sr::Color ink = {0, 0, 0, 1}) {
   sr::Scene s(size, size, bg);
   sr::StrokeStyle st;
@@ -197,7 +197,7 @@ void draw_agg(AggCanvas& c, const Workload& w, bool clear_white = true, unsigned
 void BM_splinefig(benchmark::State& state, char id, int threads) {
   const Workload& w = workload(id);
   for (auto _ : state) {
-    sr::Image img = draw_splinefig(w, threads);
+    splinefig::Image img = draw_splinefig(w, threads);
     benchmark::DoNotOptimize(img.pixels.data());
   }
   state.counters["peak_rss_MB"] = peak_rss_mb();
@@ -255,7 +255,7 @@ void BM_accuracy(benchmark::State& state, int impl) {
     for (const auto& [w, want] : cases) {
       std::vector<double> got(want.size());
       if (impl == 0) {
-        sr::Image img = draw_splinefig(w, 1, 40, {0, 0, 0, 0}, {1, 1, 1, 1});
+        splinefig::Image img = draw_splinefig(w, 1, 40, {0, 0, 0, 0}, {1, 1, 1, 1});
         for (std::size_t i = 0; i < got.size(); ++i) got[i] = img.pixels[i * 4 + 3];
       } else if (impl == 1) {
         CairoCanvas c(40);

@@ -311,6 +311,15 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
     std::size_t c1 = c0 + 1;
     double xmax = spans_[byx_[c0]].xmax;
     while (c1 < byx_.size() && spans_[byx_[c1]].xmin < xmax) xmax = std::max(xmax, spans_[byx_[c1++]].xmax);
+    const Span& s = spans_[byx_[c0]];
+    if (c1 == c0 + 1 && steps_.empty() && s.ta == y0 && s.tb == y1) {
+      // A lone span through the whole strip under a constant winding: no events.
+      const bool before = inside(base_), after = inside(base_ + s.dir);
+      if (before != after) emit(s, y0, y1, after ? 1 : -1, sink);
+      base_ += s.dir;
+      c0 = c1;
+      continue;
+    }
     cluster_events(c0, c1, y0, y1);
     sweep_cluster(c0, c1, y1, sink);
     add_steps(c0, c1, y0, y1);
