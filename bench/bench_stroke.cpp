@@ -5,7 +5,7 @@
 //   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).
 // accuracy/<impl> renders random strokes and reports the coverage error against the exact
 // union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
-#include "../tests/renderer/union_oracle.hpp"
+#include <oracle/union_coverage.hpp>
 
 #include <splinefig/renderer/renderer.hpp>
 

@@ -1,8 +1,8 @@
-// Stroke coverage against the independent union oracle (union_oracle.hpp): random seeded
+// Stroke coverage against the independent union oracle (oracle/union_coverage.hpp): random seeded
 // polylines with every cap and join, widths 0.1..20, axis-aligned, diagonal and sub-pixel
 // placements, and dense self-crossing paths. Bound: max error 1/255, mean 1e-3.
 #include "coverage_helpers.hpp"
-#include "union_oracle.hpp"
+#include <oracle/union_coverage.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 // Fill rules, disks, markers, dashes, colours, text, and image files.
 #include "coverage_helpers.hpp"
-#include "union_oracle.hpp"
+#include <oracle/union_coverage.hpp>
 
 #include <splinefig/image/io.hpp>
 

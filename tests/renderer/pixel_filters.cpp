@@ -5,7 +5,7 @@
 // (exact for polynomials), and the outer integral over x is split at every polygon vertex and
 // kernel breakpoint so that Gauss-Legendre of high order is exact up to rounding there too.
 #include "coverage_helpers.hpp"
-#include "union_oracle.hpp"
+#include <oracle/union_coverage.hpp>
 
 #include <catch2/catch.hpp>
 

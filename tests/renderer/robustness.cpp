@@ -1,6 +1,6 @@
 // Determinism across thread counts, coordinates far outside the canvas, and bad input.
 #include "coverage_helpers.hpp"
-#include "union_oracle.hpp"
+#include <oracle/union_coverage.hpp>
 
 #include <catch2/catch.hpp>
 
