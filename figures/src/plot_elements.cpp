@@ -23,7 +23,7 @@ struct InlineLabel {
 bool needs_palette(const PlotElement& e) {
   if (const auto* c = std::get_if<CurveElement>(&e)) return !c->color;
   if (const auto* k = std::get_if<KernelElement>(&e)) return !k->color && k->piece_colors.empty();
-  if (const auto* s = std::get_if<SeriesElement>(&e)) return !s->color;
+  if (const auto* s = std::get_if<SeriesElement>(&e)) return !s->look.color;
   return false;
 }
 
@@ -93,8 +93,8 @@ void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy
       Color color = pick(c->color);
       bool closed = c->ends == Ends::closed;
       if (closed && pts.size() > 2) pts.pop_back();
-      stroke_clipped(p, pts, closed, c->style, color, clip);
-      occ.mark_polyline(pts, 0.5 * c->style.width + 1);
+      stroke_clipped(p, pts, closed, c->stroke, color, clip);
+      occ.mark_polyline(pts, 0.5 * c->stroke.width + 1);
       if (c->show_knots)
         for (Vec2 k : c->knots) {
           Vec2 q = map(k);
@@ -121,7 +121,7 @@ void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy
         evaluate(curve, std::clamp(*c->label.label_at, 0.0, static_cast<double>(curve.segments())), 0, xy);
         at = map({xy[0], xy[1]});
       }
-      Entry e{c->label.label, color, c->style, true, c->marks > 0, false, render::Marker::Circle, c->mark_size};
+      Entry e{c->label.label, color, c->stroke, true, c->marks > 0, false, render::Marker::Circle, c->mark_size};
       label(c->label, e, "curve", pts, at);
     } else if (const auto* k = std::get_if<KernelElement>(&element)) {
       Support sup = kernel_support(k->basis);
@@ -133,12 +133,12 @@ void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy
           if (all.empty() || q.x != all.back().x || q.y != all.back().y) all.push_back(q);
       Color color = k->piece_colors.empty() ? pick(k->color) : k->piece_colors.back();
       if (k->piece_colors.empty()) {
-        stroke_clipped(p, all, false, k->style, color, clip);
+        stroke_clipped(p, all, false, k->stroke, color, clip);
       } else {
         for (size_t i = 0; i < pieces.size(); ++i)
-          if (!pieces[i].empty()) stroke_clipped(p, pieces[i], false, k->style, k->piece_colors[i], clip);
+          if (!pieces[i].empty()) stroke_clipped(p, pieces[i], false, k->stroke, k->piece_colors[i], clip);
       }
-      occ.mark_polyline(all, 0.5 * k->style.width + 1);
+      occ.mark_polyline(all, 0.5 * k->stroke.width + 1);
       if (k->show_knots) {
         for (double s = std::ceil(s0); s <= s1; s += 1) {
           Vec2 q = map({s, k->scale * kernel(k->basis, s)});
@@ -156,47 +156,47 @@ void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy
       }
       std::optional<Vec2> at;
       if (k->label.label_at) at = nearest_at_x(all, map.x.to_pixel(*k->label.label_at));
-      Entry e{k->label.label, color, k->style, true, false, false, render::Marker::Circle, 6};
+      Entry e{k->label.label, color, k->stroke, true, false, false, render::Marker::Circle, 6};
       label(k->label, e, "kernel", all, at);
     } else if (const auto* s = std::get_if<SeriesElement>(&element)) {
-      Color color = pick(s->color);
+      Color color = pick(s->look.color);
       std::vector<Vec2> pts;
       for (Vec2 d : s->points) pts.push_back(map(d));
-      bool line = s->style == SeriesStyle::Line || s->style == SeriesStyle::LineMarkers;
-      bool marks = s->style == SeriesStyle::Markers || s->style == SeriesStyle::LineMarkers || s->style == SeriesStyle::Stems;
+      bool line = s->look.mode == SeriesMode::Line || s->look.mode == SeriesMode::LineMarkers;
+      bool marks = s->look.mode == SeriesMode::Markers || s->look.mode == SeriesMode::LineMarkers || s->look.mode == SeriesMode::Stems;
       if (line) {
-        stroke_clipped(p, pts, s->closed, s->style_stroke, color, clip);
-        occ.mark_polyline(pts, 0.5 * s->style_stroke.width + 1);
-      } else if (s->style == SeriesStyle::Steps) {
+        stroke_clipped(p, pts, s->look.closed, s->look.stroke, color, clip);
+        occ.mark_polyline(pts, 0.5 * s->look.stroke.width + 1);
+      } else if (s->look.mode == SeriesMode::Steps) {
         std::vector<Vec2> steps;
         for (size_t i = 0; i < pts.size(); ++i) {
           if (i > 0) steps.push_back({pts[i].x, pts[i - 1].y});
           steps.push_back(pts[i]);
         }
-        stroke_clipped(p, steps, false, s->style_stroke, color, clip);
-        occ.mark_polyline(steps, 0.5 * s->style_stroke.width + 1);
-      } else if (s->style == SeriesStyle::Stems) {
+        stroke_clipped(p, steps, false, s->look.stroke, color, clip);
+        occ.mark_polyline(steps, 0.5 * s->look.stroke.width + 1);
+      } else if (s->look.mode == SeriesMode::Stems) {
         double base = std::clamp(map.y.scale == Scale::Linear ? map.y.to_pixel(0) : panel.box.bottom, panel.box.top,
                                  panel.box.bottom);
         for (Vec2 q : pts) {
           std::vector<Vec2> stem = {{q.x, base}, q};
-          stroke_clipped(p, stem, false, s->style_stroke, color, clip);
-          occ.mark_polyline(stem, 0.5 * s->style_stroke.width + 1);
+          stroke_clipped(p, stem, false, s->look.stroke, color, clip);
+          occ.mark_polyline(stem, 0.5 * s->look.stroke.width + 1);
         }
       }
       if (marks) {
-        Color mc = s->marker_color.value_or(color);
+        Color mc = s->look.marker_color.value_or(color);
         for (Vec2 q : pts) {
           if (!clip.contains(q)) continue;
-          p.marker(s->marker, q, s->marker_size, mc);
-          occ.mark_point(q, 0.5 * s->marker_size + 1);
+          p.marker(s->look.marker, q, s->look.marker_size, mc);
+          occ.mark_point(q, 0.5 * s->look.marker_size + 1);
         }
       }
       std::optional<Vec2> at;
-      if (s->label.label_at) at = nearest_at_x(pts, map.x.to_pixel(*s->label.label_at));
-      Entry e{s->label.label, color, s->style_stroke, line || s->style == SeriesStyle::Steps, marks, false, s->marker,
-              s->marker_size};
-      label(s->label, e, "series", pts, at);
+      if (s->look.label.label_at) at = nearest_at_x(pts, map.x.to_pixel(*s->look.label.label_at));
+      Entry e{s->look.label.label, color, s->look.stroke, line || s->look.mode == SeriesMode::Steps, marks, false, s->look.marker,
+              s->look.marker_size};
+      label(s->look.label, e, "series", pts, at);
     } else if (const auto* f = std::get_if<FillElement>(&element)) {
       std::vector<Vec2> poly;
       for (Vec2 d : f->upper) poly.push_back(map(d));

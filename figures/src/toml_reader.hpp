@@ -46,6 +46,20 @@ class TableReader {
 
   // Sub-tables: [key] (at most one) or [[key]] (any number), in document order.
   std::vector<const toml::table*> tables(std::string_view key);
+  // Calls read(sub, table) for each of them, `sub` reading the table under the key path
+  // "KEY" ([key]) or "KEY[i]" ([[key]]) below this one; then sub.finish() rejects the keys
+  // that read() never asked for.
+  template <class F>
+  void each_table(std::string_view key, F&& read) {
+    const toml::node* n = node(key);
+    const bool single = n && n->is_table();
+    int i = 0;
+    for (const toml::table* t : tables(key)) {
+      TableReader sub(*t, file_, single ? key_path(key) : key_path(key) + "[" + std::to_string(i++) + "]");
+      read(sub, *t);
+      sub.finish();
+    }
+  }
 
   // Throws for the first key that was never read.
   void finish() const;
@@ -54,6 +68,8 @@ class TableReader {
   [[noreturn]] void fail_at(const toml::node& node, std::string_view key, const std::string& message) const;
   std::string where() const;  // "FILE:LINE" of the table
   std::string key_path(std::string_view key) const;
+  // "FILE:LINE: KEY", the prefix of fail(key, ...): for checks made after loading.
+  std::string origin(std::string_view key) const;
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
 
