@@ -1,7 +1,6 @@
 // A whole figure: title, pixel-space items and axes panels in document order.
 #include <splinefig/figures/figure.hpp>
 
-#include "generated.hpp"
 #include "plot.hpp"
 
 #include <cmath>
@@ -26,38 +25,6 @@ void check_scaled_canvas(const FigureSpec& spec, double scale, const std::string
 namespace {
 
 using namespace detail;
-
-// An axes with its generated elements computed. Series traced from a path hold rough points
-// (enough for the data range) until the pixel map is known; then they are sampled.
-struct ComputedAxes {
-  AxesSpec axes;
-  std::vector<std::pair<size_t, Path>> paths;  // index into axes.elements
-};
-
-ComputedAxes compute_elements(const AxesSpec& ax) {
-  ComputedAxes out;
-  const auto& elements = ax.elements;
-  out.axes = ax;
-  out.axes.elements.clear();
-  for (const PlotElement& e : elements) {
-    if (!is_generated(e)) {
-      out.axes.elements.push_back(e);
-      continue;
-    }
-    for (GeneratedPart& part : generate(e)) {
-      if (auto* g = std::get_if<GeneratedSeries>(&part)) {
-        if (g->path) {
-          g->series.points = rough_points(*g->path);
-          out.paths.emplace_back(out.axes.elements.size(), std::move(*g->path));
-        }
-        out.axes.elements.push_back(std::move(g->series));
-      } else {
-        out.axes.elements.push_back(std::move(std::get<ImageElement>(part)));
-      }
-    }
-  }
-  return out;
-}
 
 FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   FigureInfo info;
@@ -110,15 +77,14 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
               cell.top = top + r * (gh + L.spacing);
               cell.bottom = cell.top + gh;
             }
-            ComputedAxes computed = compute_elements(it);
-            const AxesSpec& ax = computed.axes;
-            Panel panel = layout_panel(ax, cell, p, g);
-            for (auto& [index, path] : computed.paths)
-              std::get<SeriesElement>(computed.axes.elements[index]).points = sample_path(path, panel.map, 0.05 / scale);
+            PreparedAxes prepared = prepare_axes(it);
+            const AxesSpec& ax = prepared.axes;
+            Panel panel = layout_panel(prepared, cell, p, g);
+            sample_paths(prepared, panel.map, 0.05 / scale);
             draw_under(ax, panel, p, g);
             AxesInfo ai;
             std::vector<Entry> entries;
-            draw_elements(ax, panel, p, occ, ai.series, entries);
+            draw_elements(prepared, panel, p, occ, ai.series, entries);
             draw_over(ax, panel, cell, p, g);
             draw_legend(ax, panel, entries, p, occ, g);
             ai.pixel_box = {panel.box.left * scale, panel.box.top * scale, panel.box.right * scale,
