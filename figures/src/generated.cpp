@@ -6,24 +6,25 @@
 
 namespace splinefig::figures::detail {
 
+namespace {
+
+// The element kinds that have a parts_of().
+template <class T>
+concept Generated = requires(const T& e) { parts_of(e); };
+
+}  // namespace
+
 bool is_generated(const PlotElement& e) {
-  return std::visit(
-      [](const auto& x) {
-        using T = std::decay_t<decltype(x)>;
-        return std::is_same_v<T, InterpElement> || std::is_same_v<T, RelaxedBsplineElement> ||
-               std::is_same_v<T, BezierElement> || std::is_same_v<T, LagrangeElement> ||
-               std::is_same_v<T, RelaxedBasisElement> || std::is_same_v<T, SubdivisionElement> ||
-               std::is_same_v<T, LocalBetasElement> || std::is_same_v<T, InbetweenElement> ||
-               std::is_same_v<T, FilterCurveElement> || std::is_same_v<T, ResponseElement> ||
-               std::is_same_v<T, StepElement> || std::is_same_v<T, ZoneplateElement>;
-      },
-      e);
+  return std::visit([](const auto& x) { return Generated<std::decay_t<decltype(x)>>; }, e);
 }
 
 std::vector<GeneratedPart> generate(const PlotElement& e) {
-  std::vector<GeneratedPart> parts = generate_companion(e);
-  if (parts.empty()) parts = generate_filter(e);
-  return parts;
+  return std::visit(
+      [](const auto& x) -> std::vector<GeneratedPart> {
+        if constexpr (Generated<std::decay_t<decltype(x)>>) return parts_of(x);
+        else return {};
+      },
+      e);
 }
 
 namespace {

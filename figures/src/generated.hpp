@@ -33,11 +33,23 @@ struct GeneratedSeries {
 using GeneratedPart = std::variant<GeneratedSeries, ImageElement>;
 
 bool is_generated(const PlotElement& e);
-// The parts of a generated element, in drawing order. Throws SpecFileError naming the key
-// (origin) when the library rejects the element's data.
+// The parts of a generated element, in drawing order (none for other elements). Throws
+// SpecFileError naming the key (origin) when the library rejects the element's data.
 std::vector<GeneratedPart> generate(const PlotElement& e);
-std::vector<GeneratedPart> generate_companion(const PlotElement& e);
-std::vector<GeneratedPart> generate_filter(const PlotElement& e);
+
+// One per generated element kind (generated_companion.cpp, generated_filters.cpp).
+std::vector<GeneratedPart> parts_of(const InterpElement& e);
+std::vector<GeneratedPart> parts_of(const RelaxedBsplineElement& e);
+std::vector<GeneratedPart> parts_of(const BezierElement& e);
+std::vector<GeneratedPart> parts_of(const LagrangeElement& e);
+std::vector<GeneratedPart> parts_of(const RelaxedBasisElement& e);
+std::vector<GeneratedPart> parts_of(const SubdivisionElement& e);
+std::vector<GeneratedPart> parts_of(const LocalBetasElement& e);
+std::vector<GeneratedPart> parts_of(const InbetweenElement& e);
+std::vector<GeneratedPart> parts_of(const FilterCurveElement& e);
+std::vector<GeneratedPart> parts_of(const ResponseElement& e);
+std::vector<GeneratedPart> parts_of(const StepElement& e);
+std::vector<GeneratedPart> parts_of(const ZoneplateElement& e);
 
 // A few points of the path (its breaks and 32 steps between each), enough to find the
 // panel's data range before the pixel map exists.

@@ -55,7 +55,9 @@ Path bezier_path(BezierSpline b) {
   throw SpecFileError(origin + ": " + e.what());
 }
 
-std::vector<GeneratedPart> interp(const InterpElement& e) {
+}  // namespace
+
+std::vector<GeneratedPart> parts_of(const InterpElement& e) {
   Interpolant s;
   try {
     const Points S = to_points(e.points);
@@ -77,7 +79,7 @@ std::vector<GeneratedPart> interp(const InterpElement& e) {
   return {};
 }
 
-std::vector<GeneratedPart> relaxed_bspline(const RelaxedBsplineElement& e) {
+std::vector<GeneratedPart> parts_of(const RelaxedBsplineElement& e) {
   using Show = RelaxedBsplineElement::Show;
   const Points B = to_points(e.points);
   BezierSpline b = relaxed_bspline_bezier(B);
@@ -106,7 +108,7 @@ std::vector<GeneratedPart> relaxed_bspline(const RelaxedBsplineElement& e) {
   return out;
 }
 
-std::vector<GeneratedPart> bezier(const BezierElement& e) {
+std::vector<GeneratedPart> parts_of(const BezierElement& e) {
   auto P = std::make_shared<const Points>(to_points(e.points));
   Path p;
   p.breaks = {0, 1};
@@ -118,7 +120,7 @@ std::vector<GeneratedPart> bezier(const BezierElement& e) {
   return {traced(std::move(p), e.look)};
 }
 
-std::vector<GeneratedPart> lagrange_curve(const LagrangeElement& e) {
+std::vector<GeneratedPart> parts_of(const LagrangeElement& e) {
   std::vector<double> t;
   Points y(1);
   for (Vec2 q : e.points) {
@@ -149,7 +151,7 @@ std::vector<GeneratedPart> lagrange_curve(const LagrangeElement& e) {
   return {traced(std::move(p), e.look)};
 }
 
-std::vector<GeneratedPart> relaxed_basis_curve(const RelaxedBasisElement& e) {
+std::vector<GeneratedPart> parts_of(const RelaxedBasisElement& e) {
   auto f = std::make_shared<const Interpolant>(relaxed_basis(e.n));
   const std::size_t k = static_cast<std::size_t>(e.k), n = static_cast<std::size_t>(e.n);
   Path p;
@@ -162,12 +164,12 @@ std::vector<GeneratedPart> relaxed_basis_curve(const RelaxedBasisElement& e) {
   return {traced(std::move(p), e.look)};
 }
 
-std::vector<GeneratedPart> subdivision(const SubdivisionElement& e) {
+std::vector<GeneratedPart> parts_of(const SubdivisionElement& e) {
   const Points R = refine(to_points(e.points), e.steps);
   return {points(to_vec(e.limit ? limit_points(R) : R), e.look)};
 }
 
-std::vector<GeneratedPart> local_betas(const LocalBetasElement& e) {
+std::vector<GeneratedPart> parts_of(const LocalBetasElement& e) {
   std::vector<ShapeParameters> betas;
   for (const auto& b : e.betas) betas.push_back({b[0], b[1]});
   // The knots extended for the end mode, with their parameters (as sample_local_betas does).
@@ -197,7 +199,7 @@ std::vector<GeneratedPart> local_betas(const LocalBetasElement& e) {
   return {traced(std::move(p), e.look)};
 }
 
-std::vector<GeneratedPart> inbetween(const InbetweenElement& e) {
+std::vector<GeneratedPart> parts_of(const InbetweenElement& e) {
   // Each keyframe is one point of R^(2m); the in-between frame at t lies on the relaxed
   // spline through them.
   const std::size_t m = e.frames[0].size();
@@ -213,20 +215,6 @@ std::vector<GeneratedPart> inbetween(const InbetweenElement& e) {
   std::vector<Vec2> pts;
   for (std::size_t i = 0; i < m; ++i) pts.push_back({x[2 * i], x[2 * i + 1]});
   return {points(pts, e.look)};
-}
-
-}  // namespace
-
-std::vector<GeneratedPart> generate_companion(const PlotElement& e) {
-  if (const auto* x = std::get_if<InterpElement>(&e)) return interp(*x);
-  if (const auto* x = std::get_if<RelaxedBsplineElement>(&e)) return relaxed_bspline(*x);
-  if (const auto* x = std::get_if<BezierElement>(&e)) return bezier(*x);
-  if (const auto* x = std::get_if<LagrangeElement>(&e)) return lagrange_curve(*x);
-  if (const auto* x = std::get_if<RelaxedBasisElement>(&e)) return relaxed_basis_curve(*x);
-  if (const auto* x = std::get_if<SubdivisionElement>(&e)) return subdivision(*x);
-  if (const auto* x = std::get_if<LocalBetasElement>(&e)) return local_betas(*x);
-  if (const auto* x = std::get_if<InbetweenElement>(&e)) return inbetween(*x);
-  return {};
 }
 
 }  // namespace splinefig::figures::detail

@@ -46,8 +46,10 @@ Edge edge_of(const std::string& name) { return parse_edge(name).value_or(Edge::c
 
 GeneratedSeries traced(Path path, const SeriesLook& look) { return {{{}, look}, std::move(path)}; }
 
+}  // namespace
+
 // k(s) on [s0, s1]; at a jump (the box) both one-sided values, so it is drawn upright.
-std::vector<GeneratedPart> filter_curve(const FilterCurveElement& e) {
+std::vector<GeneratedPart> parts_of(const FilterCurveElement& e) {
   auto f = filter_of(e.filter);
   const double s0 = e.range ? (*e.range)[0] : f->support.lo, s1 = e.range ? (*e.range)[1] : f->support.hi;
   Path p;
@@ -59,7 +61,7 @@ std::vector<GeneratedPart> filter_curve(const FilterCurveElement& e) {
 
 // |K(f)|: smooth but for kinks where K changes sign; breaks every 1/8 cycle per sample seed
 // the subdivision.
-std::vector<GeneratedPart> response_curve(const ResponseElement& e) {
+std::vector<GeneratedPart> parts_of(const ResponseElement& e) {
   auto f = filter_of(e.filter);
   Path p;
   p.breaks = breaks_over(e.range[0], e.range[1], {0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875});
@@ -69,7 +71,7 @@ std::vector<GeneratedPart> response_curve(const ResponseElement& e) {
 
 // X(t) = sum_j c_j k(t - j) / sum_j k(t - j) for samples at t = 0 .. n-1, extended beyond them
 // by the edge mode; c = the samples, or their inverse prefilter.
-std::vector<GeneratedPart> step_curve(const StepElement& e) {
+std::vector<GeneratedPart> parts_of(const StepElement& e) {
   auto f = filter_of(e.filter);
   const long n = static_cast<long>(e.values.size());
   const Edge edge = edge_of(e.edge);
@@ -102,7 +104,7 @@ std::vector<GeneratedPart> step_curve(const StepElement& e) {
 // A zone plate z = 1/2 + 1/2 cos(pi r^2 / N) sampled at the centres of N x N pixels (r from the
 // image centre, in pixels): its local frequency r/N reaches Nyquist at the edges' midpoints and
 // passes it towards the corners. Resampled to `size` with the filter and cropped.
-std::vector<GeneratedPart> zoneplate(const ZoneplateElement& e) {
+std::vector<GeneratedPart> parts_of(const ZoneplateElement& e) {
   const Filter f = parse_filter(e.filter);
   const int n = e.source;
   ResampleOptions opt;
@@ -130,16 +132,6 @@ std::vector<GeneratedPart> zoneplate(const ZoneplateElement& e) {
     for (int x = e.crop[0]; x < e.crop[0] + e.crop[2]; ++x)
       im.raster.data.push_back(static_cast<float>(std::clamp(0.5 + e.contrast * (out.at(x, y, 0) - 0.5), 0.0, 1.0)));
   return {std::move(im)};
-}
-
-}  // namespace
-
-std::vector<GeneratedPart> generate_filter(const PlotElement& e) {
-  if (const auto* x = std::get_if<FilterCurveElement>(&e)) return filter_curve(*x);
-  if (const auto* x = std::get_if<ResponseElement>(&e)) return response_curve(*x);
-  if (const auto* x = std::get_if<StepElement>(&e)) return step_curve(*x);
-  if (const auto* x = std::get_if<ZoneplateElement>(&e)) return zoneplate(*x);
-  return {};
 }
 
 }  // namespace splinefig::figures::detail

@@ -33,6 +33,19 @@ struct PixelPoly {
   }
 };
 
+// A data-space piece mapped by an affine map: the coefficients scale, the constant term
+// also shifts.
+PixelPoly in_pixels(const PixelPoly& data, const PixelMap& map) {
+  const double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
+  const double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
+  PixelPoly px = data;
+  for (auto& v : px.cx) v *= sx;
+  for (auto& v : px.cy) v *= sy;
+  px.cx[0] = map.x.to_pixel(data.cx[0]);
+  px.cy[0] = map.y.to_pixel(data.cy[0]);
+  return px;
+}
+
 // Uniform steps of a polynomial piece over [u0, u1], appending (skipping the first point
 // when `skip_first`).
 void sample_poly(const PixelPoly& p, double u0, double u1, double tol, bool skip_first, std::vector<Vec2>& out) {
@@ -96,15 +109,7 @@ std::vector<Vec2> sample_curve(const Curve& c, const PixelMap& map, double tol) 
       data.cy[n - r] = dim > 1 ? a[r * dim + 1] : 0;
     }
     if (map.affine()) {
-      // Affine: scale the coefficients; the constant term also shifts.
-      double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
-      double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
-      PixelPoly px = data;
-      for (auto& v : px.cx) v *= sx;
-      for (auto& v : px.cy) v *= sy;
-      px.cx[0] = map.x.to_pixel(data.cx[0]);
-      px.cy[0] = map.y.to_pixel(data.cy[0]);
-      sample_poly(px, 0, 1, tol, i > 0, raw);
+      sample_poly(in_pixels(data, map), 0, 1, tol, i > 0, raw);
     } else {
       auto f = [&](double u) { return map(data.at(u)); };
       Vec2 p0 = f(0);
@@ -135,14 +140,7 @@ std::vector<std::vector<Vec2>> sample_kernel(const Basis& b, double s0, double s
     for (int r = 0; r <= n; ++r) data.cy[n - r] = scale * b(r, col);
     auto& out = pieces[p];
     if (map.affine()) {
-      double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
-      double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
-      PixelPoly px = data;
-      for (auto& v : px.cx) v *= sx;
-      for (auto& v : px.cy) v *= sy;
-      px.cx[0] = map.x.to_pixel(data.cx[0]);
-      px.cy[0] = map.y.to_pixel(data.cy[0]);
-      sample_poly(px, u0, u1, tol, false, out);
+      sample_poly(in_pixels(data, map), u0, u1, tol, false, out);
     } else {
       auto f = [&](double u) { return map(data.at(u)); };
       out.push_back(f(u0));

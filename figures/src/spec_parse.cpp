@@ -138,9 +138,7 @@ PolygonItem parse_polygon(TableReader& r) {
 
 CircleItem parse_circle(TableReader& r) {
   CircleItem c;
-  auto centre = r.opt_point("center");
-  if (!centre) r.fail("center", "a circle needs center = [x, y]");
-  c.centre = *centre;
+  c.centre = r.required_point("center", "a circle needs center = [x, y]");
   c.radius = r.positive("radius", 1);
   c.fill = r.opt_color("fill");
   if (auto s = r.opt_color("stroke")) {
@@ -171,12 +169,8 @@ MarkerItem parse_marker(TableReader& r) {
 
 TextItem parse_text(TableReader& r) {
   TextItem t;
-  auto at = r.opt_point("at");
-  if (!at) r.fail("at", "text needs at = [x, y]");
-  t.at = *at;
-  auto text = r.opt_label("text");
-  if (!text) r.fail("text", "text needs text = \"...\"");
-  t.text = *text;
+  t.at = r.required_point("at", "text needs at = [x, y]");
+  t.text = r.required_label("text", "text needs text = \"...\"");
   t.font = r.font(t.font);
   t.anchor = r.anchor(t.anchor);
   r.finish();

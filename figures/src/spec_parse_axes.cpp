@@ -153,12 +153,8 @@ FillElement parse_fill(TableReader& r) {
 
 TextElement parse_text_element(TableReader& r) {
   TextElement t;
-  auto at = r.opt_point("at");
-  if (!at) r.fail("at", "text needs at = [x, y] (data)");
-  t.at = *at;
-  auto text = r.opt_label("text");
-  if (!text) r.fail("text", "text needs text = \"...\"");
-  t.text = *text;
+  t.at = r.required_point("at", "text needs at = [x, y] (data)");
+  t.text = r.required_label("text", "text needs text = \"...\"");
   t.offset = r.opt_point("offset").value_or(Vec2{0, 0});
   t.font = r.font(t.font);
   t.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
@@ -167,15 +163,9 @@ TextElement parse_text_element(TableReader& r) {
 
 AnnotationElement parse_annotation(TableReader& r) {
   AnnotationElement a;
-  auto at = r.opt_point("at");
-  auto to = r.opt_point("to");
-  if (!at) r.fail("at", "an annotation needs at = [x, y] (the text, data)");
-  if (!to) r.fail("to", "an annotation needs to = [x, y] (the arrow's tip, data)");
-  a.at = *at;
-  a.to = *to;
-  auto text = r.opt_label("text");
-  if (!text) r.fail("text", "an annotation needs text = \"...\"");
-  a.text = *text;
+  a.at = r.required_point("at", "an annotation needs at = [x, y] (the text, data)");
+  a.to = r.required_point("to", "an annotation needs to = [x, y] (the arrow's tip, data)");
+  a.text = r.required_label("text", "an annotation needs text = \"...\"");
   a.font = r.font(a.font);
   a.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
   a.arrow_color = r.color("arrow_color", a.font.color);

@@ -251,6 +251,18 @@ std::vector<std::vector<double>> TableReader::matrix(std::string_view key) {
   return out;
 }
 
+Vec2 TableReader::required_point(std::string_view key, const std::string& missing) {
+  auto p = opt_point(key);
+  if (!p) fail(key, missing);
+  return *p;
+}
+
+std::string TableReader::required_label(std::string_view key, const std::string& missing) {
+  auto t = opt_label(key);
+  if (!t) fail(key, missing);
+  return *t;
+}
+
 std::vector<const toml::table*> TableReader::tables(std::string_view key) {
   std::vector<const toml::table*> out;
   const toml::node* n = node(key);

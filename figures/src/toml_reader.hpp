@@ -42,6 +42,9 @@ class TableReader {
   std::vector<std::string> strings(std::string_view key);
   std::optional<Vec2> opt_point(std::string_view key);
   std::vector<Vec2> points(std::string_view key);  // [[x,y], ...]; [] if absent
+  // Keys that must be there: fail with `missing` when they are not.
+  Vec2 required_point(std::string_view key, const std::string& missing);
+  std::string required_label(std::string_view key, const std::string& missing);
   std::vector<std::vector<double>> matrix(std::string_view key);  // rows of numbers
 
   // Sub-tables: [key] (at most one) or [[key]] (any number), in document order.
