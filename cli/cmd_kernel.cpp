@@ -23,12 +23,7 @@ constexpr double max_rows = 1e8;
 // --report: the filter's numbers; --response: f,|K(f)| lines (f in cycles per sample, by default
 // 0 to 2 in steps of 1/256). Any basis spec or box, tent, lanczos3.
 int run_filter(const Options& o) {
-  Filter f;
-  try {
-    f = parse_filter(o.basis);
-  } catch (const SpecError& e) {
-    throw Failure(std::string("--basis: ") + e.what());
-  }
+  const Filter f = cli::parse_spec_flag("--basis", o.basis, [](const std::string& s) { return parse_filter(s); });
   if (o.report) {
     cli::write_stdout(report_text(analyse(f)));
     return 0;
@@ -55,12 +50,7 @@ int run_filter(const Options& o) {
 
 int run(const Options& o) {
   if (o.response || o.report) return run_filter(o);
-  Basis b;
-  try {
-    b = parse_basis(o.basis);
-  } catch (const SpecError& e) {
-    throw Failure(std::string("--basis: ") + e.what());
-  }
+  const Basis b = cli::parse_spec_flag("--basis", o.basis, [](const std::string& s) { return parse_basis(s); });
   const double x0 = cli::parse_number(o.from, "--from");
   const double x1 = cli::parse_number(o.to, "--to");
   const double step = cli::parse_number(o.step, "--step");
