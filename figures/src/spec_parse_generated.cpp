@@ -211,7 +211,9 @@ ZoneplateElement parse_zoneplate(TableReader& r) {
 void parse_generated_elements(TableReader& r, std::vector<std::pair<size_t, PlotElement>>& elements) {
   auto each = [&](std::string_view key, auto&& read) {
     r.each_table(key, [&](TableReader& sub, const toml::table& t) {
-      elements.emplace_back(t.source().begin.line, PlotElement{read(sub)});
+      auto e = read(sub);
+      e.where = sub.origin("");
+      elements.emplace_back(t.source().begin.line, PlotElement{std::move(e)});
     });
   };
   each("interp", parse_interp);

@@ -98,3 +98,17 @@ TEST_CASE("layout: flat_parameters cuts a circle into chords within the toleranc
   // Not far more chords than needed: 2 pi / (2 acos(1 - tol / r)) = 99.3, so at most 2 x 128.
   CHECK(us.size() <= 256);
 }
+
+TEST_CASE("layout: a generated curve below zero on a log axis names its element") {
+  const FigureSpec spec = parse_spec(
+      "[canvas]\nwidth = 200\nheight = 150\n[axes]\nx_range = [0, 4]\ny_scale = \"log\"\ny_range = [0.1, 10]\n"
+      "[[axes.lagrange]]\npoints = [[0, 1], [1, -2], [2, 3]]\n",
+      "log.toml");
+  std::string msg;
+  try {
+    render_figure(spec);
+  } catch (const SpecFileError& e) {
+    msg = e.what();
+  }
+  CHECK(msg == "log.toml:8: axes.lagrange[0]: a log y axis needs positive y data");
+}

@@ -215,9 +215,11 @@ struct ImageElement {
 // Elements whose data the layout computes with the spline library, the filter analysis or the
 // resampler (docs/companion.md, docs/resample.md). The spec holds only their parameters; the
 // layout turns them into series (curves sampled to 0.05 px like [[axes.curve]]) or an image.
-// `origin` is "FILE:LINE: KEY" of the key a computation can reject, for messages.
+// `where` is "FILE:LINE: KEY" of the element's table and `origin` that of the key a computation
+// can reject, for messages.
 
 struct InterpElement {  // [[axes.interp]]: the spline through data
+  std::string where;
   enum class EndMode { Relaxed, Clamped, Periodic };
   enum class Show { Curve, Control, Bezier };
   std::vector<Vec2> points;
@@ -229,6 +231,7 @@ struct InterpElement {  // [[axes.interp]]: the spline through data
 };
 
 struct RelaxedBsplineElement {  // [[axes.relaxed_bspline]]
+  std::string where;
   enum class Show { Curve, Joints, Division, Bezier, AFrames };
   std::vector<Vec2> points;
   Show show = Show::Curve;
@@ -236,11 +239,13 @@ struct RelaxedBsplineElement {  // [[axes.relaxed_bspline]]
 };
 
 struct BezierElement {  // [[axes.bezier]]: one Bezier curve of any degree
+  std::string where;
   std::vector<Vec2> points;
   SeriesLook look;
 };
 
 struct LagrangeElement {  // [[axes.lagrange]]: y(x) through the data
+  std::string where;
   std::vector<Vec2> points;
   std::optional<std::array<double, 2>> range;  // default: the data's x extent
   SeriesLook look;
@@ -248,11 +253,13 @@ struct LagrangeElement {  // [[axes.lagrange]]: y(x) through the data
 };
 
 struct RelaxedBasisElement {  // [[axes.relaxed_basis]]: f_k of relaxed interpolation
+  std::string where;
   int n = 4, k = 0;
   SeriesLook look;
 };
 
 struct SubdivisionElement {  // [[axes.subdivision]]
+  std::string where;
   std::vector<Vec2> points;
   int steps = 1;
   bool limit = false;  // the limit points instead of the refined polygon
@@ -260,6 +267,7 @@ struct SubdivisionElement {  // [[axes.subdivision]]
 };
 
 struct LocalBetasElement {  // [[axes.local_betas]]: one (b1, b2) per knot
+  std::string where;
   std::vector<Vec2> knots;
   std::vector<std::array<double, 2>> betas;
   Ends ends = Ends::open;
@@ -268,24 +276,28 @@ struct LocalBetasElement {  // [[axes.local_betas]]: one (b1, b2) per knot
 };
 
 struct InbetweenElement {  // [[axes.inbetween]]: a frame between keyframes
+  std::string where;
   std::vector<std::vector<Vec2>> frames;  // equally long
   double t = 0;
   SeriesLook look;
 };
 
 struct FilterCurveElement {  // [[axes.filter]]: k(s) of a filter spec
+  std::string where;
   std::string filter;  // checked by the loader
   std::optional<std::array<double, 2>> range;  // default: the support
   SeriesLook look;
 };
 
 struct ResponseElement {  // [[axes.response]]: |K(f)|, f in cycles per sample
+  std::string where;
   std::string filter;
   std::array<double, 2> range{0, 2};
   SeriesLook look;
 };
 
 struct StepElement {  // [[axes.step]]: a filter's reconstruction of samples
+  std::string where;
   std::string filter;
   std::vector<double> values{0, 0, 0, 0, 1, 1, 1, 1};
   std::string edge = "clamp";  // checked by the loader
@@ -296,6 +308,7 @@ struct StepElement {  // [[axes.step]]: a filter's reconstruction of samples
 };
 
 struct ZoneplateElement {  // [[axes.zoneplate]]: a zone plate resampled, as an image
+  std::string where;
   std::string filter;
   int source = 64, size = 512;
   std::string edge = "mirror";
