@@ -20,6 +20,28 @@ struct Options {
 
 constexpr double max_rows = 1e8;
 
+// x,f(x) lines for x_i = x0 + i*step (not accumulated), up to x1 allowing for the rounding of
+// (x1-x0)/step; the flags as given are named in messages.
+template <class F>
+int write_rows(const Options& o, double x0, double x1, double step, F&& f) {
+  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
+  if (x1 < x0) throw Failure("--to " + o.to + " is less than --from " + o.from);
+  const double span = (x1 - x0) / step;
+  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
+  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
+  std::string text;
+  text.reserve(static_cast<size_t>(rows) * 24);
+  for (long long i = 0; i < rows; ++i) {
+    const double x = x0 + static_cast<double>(i) * step;
+    cli::append_number(text, x);
+    text += ',';
+    cli::append_number(text, f(x));
+    text += '\n';
+  }
+  cli::write_stdout(text);
+  return 0;
+}
+
 // --report: the filter's numbers; --response: f,|K(f)| lines (f in cycles per sample, by default
 // 0 to 2 in steps of 1/256). Any basis spec or box, tent, lanczos3.
 int run_filter(const Options& o) {
@@ -31,21 +53,7 @@ int run_filter(const Options& o) {
   const double f0 = o.range_given ? cli::parse_number(o.from, "--from") : 0.0;
   const double f1 = o.range_given ? cli::parse_number(o.to, "--to") : 2.0;
   const double step = o.range_given ? cli::parse_number(o.step, "--step") : 1.0 / 256;
-  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
-  if (f1 < f0) throw Failure("--to " + o.to + " is less than --from " + o.from);
-  const double span = (f1 - f0) / step;
-  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
-  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
-  std::string text;
-  for (long long i = 0; i < rows; ++i) {
-    const double fr = f0 + static_cast<double>(i) * step;
-    cli::append_number(text, fr);
-    text += ',';
-    cli::append_number(text, response(f, fr));
-    text += '\n';
-  }
-  cli::write_stdout(text);
-  return 0;
+  return write_rows(o, f0, f1, step, [&](double fr) { return response(f, fr); });
 }
 
 int run(const Options& o) {
@@ -54,23 +62,7 @@ int run(const Options& o) {
   const double x0 = cli::parse_number(o.from, "--from");
   const double x1 = cli::parse_number(o.to, "--to");
   const double step = cli::parse_number(o.step, "--step");
-  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
-  if (x1 < x0) throw Failure("--to " + o.to + " is less than --from " + o.from);
-  // x_i = x0 + i*step (not accumulated), up to x1 allowing for the rounding of (x1-x0)/step.
-  const double span = (x1 - x0) / step;
-  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
-  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
-  std::string text;
-  text.reserve(static_cast<size_t>(rows) * 24);
-  for (long long i = 0; i < rows; ++i) {
-    const double x = x0 + static_cast<double>(i) * step;
-    cli::append_number(text, x);
-    text += ',';
-    cli::append_number(text, kernel(b, x));
-    text += '\n';
-  }
-  cli::write_stdout(text);
-  return 0;
+  return write_rows(o, x0, x1, step, [&](double x) { return kernel(b, x); });
 }
 
 const splinefig::cli::Registration reg{
