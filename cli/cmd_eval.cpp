@@ -117,12 +117,7 @@ void check_finite(const Points& out, std::size_t k, const Curve& c, const Option
 }
 
 int run(const Options& o) {
-  Basis b;
-  try {
-    b = parse_basis(o.basis);
-  } catch (const SpecError& e) {
-    throw Failure(std::string("--basis: ") + e.what());
-  }
+  const Basis b = cli::parse_spec_flag("--basis", o.basis, [](const std::string& s) { return parse_basis(s); });
   const int grain = static_cast<int>(cli::parse_integer(o.grain, "--grain", 1, 1 << 24));
   const int derivative = static_cast<int>(cli::parse_integer(o.derivative, "--derivative", 0, 2));
   Ends ends;

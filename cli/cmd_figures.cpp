@@ -48,8 +48,8 @@ std::vector<std::string> split(const std::string& s) {
 
 // The flags checked and turned into batch options.
 fig::BatchOptions batch_options(const FiguresArgs& a) {
-  if (!(a.scale > 0) || a.scale > 64) throw Failure("--scale " + std::to_string(a.scale) + ": must be in (0, 64]");
-  if (a.threads < 0) throw Failure("--threads: must not be negative");
+  splinefig::cli::check_output_scale(a.scale);
+  splinefig::cli::check_threads(a.threads);
   fig::BatchOptions o;
   o.out_dir = a.out;
   o.scale = a.scale;

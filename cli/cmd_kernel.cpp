@@ -43,16 +43,35 @@ void check_report(const FilterReport& r, const std::string& basis) {
       throw Failure("--basis " + basis + ": the filter's " + name + " overflows the range of a double");
 }
 
-Kernel parse(const Options& o) {
-  try {
-    return parse_kernel(o.basis);
-  } catch (const SpecError& e) {
-    throw Failure(std::string("--basis: ") + e.what());
+// x,f(x) lines for x_i = x0 + i*step (not accumulated), up to x1 allowing for the rounding of
+// (x1-x0)/step; the flags as given are named in messages, and so is a value that is not finite
+// (`what` names it: "k(x) at x = ").
+template <class F>
+int write_rows(const Options& o, double x0, double x1, double step, const char* what, F&& f) {
+  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
+  if (x1 < x0) throw Failure("--to " + o.to + " is less than --from " + o.from);
+  const double span = (x1 - x0) / step;
+  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
+  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
+  std::string text;
+  text.reserve(static_cast<size_t>(rows) * 24);
+  for (long long i = 0; i < rows; ++i) {
+    const double x = x0 + static_cast<double>(i) * step;
+    cli::append_number(text, x);
+    text += ',';
+    cli::append_number(text, finite(f(x), o.basis, what, x));
+    text += '\n';
   }
+  cli::write_stdout(text);
+  return 0;
+}
+
+Kernel parse(const Options& o) {
+  return cli::parse_spec_flag("--basis", o.basis, [](const std::string& s) { return parse_kernel(s); });
 }
 
 // --report: the filter's numbers; --response: f,|K(f)| lines (f in cycles per sample, by default
-// 0 to 2 in steps of 1/256).
+// 0 to 2 in steps of 1/256). Any basis spec or box, tent, lanczos3.
 int run_filter(const Options& o) {
   const Kernel f = parse(o);
   if (o.report) {
@@ -64,21 +83,7 @@ int run_filter(const Options& o) {
   const double f0 = o.range_given ? cli::parse_number(o.from, "--from") : 0.0;
   const double f1 = o.range_given ? cli::parse_number(o.to, "--to") : 2.0;
   const double step = o.range_given ? cli::parse_number(o.step, "--step") : 1.0 / 256;
-  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
-  if (f1 < f0) throw Failure("--to " + o.to + " is less than --from " + o.from);
-  const double span = (f1 - f0) / step;
-  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
-  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
-  std::string text;
-  for (long long i = 0; i < rows; ++i) {
-    const double fr = f0 + static_cast<double>(i) * step;
-    cli::append_number(text, fr);
-    text += ',';
-    cli::append_number(text, finite(response(f, fr), o.basis, "|K(f)| at f = ", fr));
-    text += '\n';
-  }
-  cli::write_stdout(text);
-  return 0;
+  return write_rows(o, f0, f1, step, "|K(f)| at f = ", [&](double fr) { return response(f, fr); });
 }
 
 int run(const Options& o) {
@@ -87,23 +92,7 @@ int run(const Options& o) {
   const double x0 = cli::parse_number(o.from, "--from");
   const double x1 = cli::parse_number(o.to, "--to");
   const double step = cli::parse_number(o.step, "--step");
-  if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
-  if (x1 < x0) throw Failure("--to " + o.to + " is less than --from " + o.from);
-  // x_i = x0 + i*step (not accumulated), up to x1 allowing for the rounding of (x1-x0)/step.
-  const double span = (x1 - x0) / step;
-  if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
-  const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
-  std::string text;
-  text.reserve(static_cast<size_t>(rows) * 24);
-  for (long long i = 0; i < rows; ++i) {
-    const double x = x0 + static_cast<double>(i) * step;
-    cli::append_number(text, x);
-    text += ',';
-    cli::append_number(text, finite(k(x), o.basis, "k(x) at x = ", x));
-    text += '\n';
-  }
-  cli::write_stdout(text);
-  return 0;
+  return write_rows(o, x0, x1, step, "k(x) at x = ", [&](double x) { return k(x); });
 }
 
 const splinefig::cli::Registration reg{

@@ -35,8 +35,8 @@ const splinefig::cli::Registration reg{
         namespace fig = splinefig::figures;
         const std::string ext = extension_of(a->out);
         if (ext != ".png" && ext != ".exr") throw Failure("-o " + a->out + ": the output must end in .png or .exr");
-        if (!(a->scale > 0) || a->scale > 64) throw Failure("--scale " + std::to_string(a->scale) + ": must be in (0, 64]");
-        if (a->threads < 0) throw Failure("--threads: must not be negative");
+        splinefig::cli::check_output_scale(a->scale);
+        splinefig::cli::check_threads(a->threads);
         try {
           fig::FigureSpec spec = fig::load_spec(a->spec);
           fig::check_scaled_canvas(spec, a->scale, "--scale");

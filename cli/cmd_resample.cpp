@@ -44,12 +44,7 @@ int scaled(int src, double s, const char* axis, const std::string& text) {
 }
 
 int run(const Options& o) {
-  Kernel filter;
-  try {
-    filter = parse_kernel(o.filter);
-  } catch (const SpecError& e) {
-    throw Failure(std::string("--filter: ") + e.what());
-  }
+  const Kernel filter = cli::parse_spec_flag("--filter", o.filter, [](const std::string& s) { return parse_kernel(s); });
   const auto edge = parse_edge(o.edge);
   if (!edge) throw Failure("--edge: '" + o.edge + "' is not one of clamp, mirror, wrap, black");
   if (o.threads < 0) throw Failure("--threads: " + std::to_string(o.threads) + " must be >= 0");

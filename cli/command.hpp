@@ -4,6 +4,8 @@
 // where setup(CLI::App&) adds the options and returns the function that runs it.
 // The function returns the process exit code; it reports errors by throwing
 // splinefig::cli::Failure (one line, printed as "splinefig NAME: message").
+#include <splinefig/spline/basis.hpp>
+
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <stdexcept>
@@ -34,5 +36,24 @@ struct Failure : std::runtime_error {
   int code;
   explicit Failure(const std::string& what, int code = 2) : std::runtime_error(what), code(code) {}
 };
+
+// A spec given to `flag`, read by `parse` (parse_basis, parse_kernel, ...): its SpecError
+// becomes a Failure naming the flag.
+template <class Parse>
+auto parse_spec_flag(const std::string& flag, const std::string& spec, Parse&& parse) -> decltype(parse(spec)) {
+  try {
+    return parse(spec);
+  } catch (const SpecError& e) {
+    throw Failure(flag + ": " + e.what());
+  }
+}
+
+// The flags shared by the commands that render figures.
+inline void check_output_scale(double scale) {
+  if (!(scale > 0) || scale > 64) throw Failure("--scale " + std::to_string(scale) + ": must be in (0, 64]");
+}
+inline void check_threads(int threads) {
+  if (threads < 0) throw Failure("--threads: must not be negative");
+}
 
 }  // namespace splinefig::cli

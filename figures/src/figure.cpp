@@ -26,6 +26,65 @@ namespace {
 
 using namespace detail;
 
+// The layout grid's cells, below the figure title.
+struct PanelGrid {
+  double left, top, cell_width, cell_height, spacing;
+  double canvas_width, canvas_height;
+  // The panel's cell, or the whole canvas for a panel placed by its own `box`.
+  Rect cell(const AxesSpec& ax) const {
+    if (!ax.cell) return {0, 0, canvas_width, canvas_height};
+    const int r = (*ax.cell)[0], c = (*ax.cell)[1];
+    const double x = left + c * (cell_width + spacing), y = top + r * (cell_height + spacing);
+    return {x, y, x + cell_width, y + cell_height};
+  }
+};
+
+// ---- Pixel-space items ------------------------------------------------------------------
+
+void draw_item(const PolylineItem& it, Painter& p) { p.stroke(it.points, it.closed, it.pen.style, it.pen.color); }
+void draw_item(const PolygonItem& it, Painter& p) { p.fill(it.contours, it.rule, it.color); }
+void draw_item(const CircleItem& it, Painter& p) { p.circle(it.centre, it.radius, it.fill, it.stroke); }
+void draw_item(const MarkerItem& it, Painter& p) {
+  for (Vec2 q : it.points) p.marker(it.shape, q, it.size, it.color);
+}
+void draw_item(const TextItem& it, Painter& p) { p.text(it.text, it.at, it.font, it.anchor); }
+void draw_item(const ImageItem& it, Painter& p) {
+  Vec2 size = it.size;
+  if (!it.has_size) {
+    // Own size: inline data knows it; files are read when painted, so ask now.
+    size = {static_cast<double>(it.raster.width), static_cast<double>(it.raster.height)};
+    if (!it.raster.file.empty()) size = raster_size(it.raster);
+  }
+  p.image(it.raster, it.at.x, it.at.y, it.at.x + size.x, it.at.y + size.y);
+}
+
+// ---- Axes -------------------------------------------------------------------------------
+
+// Lays one panel out in its cell and draws it: generated elements computed, the box, ranges
+// and ticks, curves sampled at the output scale, then guides under, data, guides over, legend.
+AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, double scale, Painter& p, Occupancy& occ, const Guides& g) {
+  PreparedAxes prepared = prepare_axes(spec);
+  const AxesSpec& ax = prepared.axes;
+  const Panel panel = layout_panel(prepared, cell, p, g);
+  sample_paths(prepared, panel.map, 0.05 / scale);
+  draw_under(ax, panel, p, g);
+  AxesInfo info;
+  std::vector<Entry> entries;
+  draw_elements(prepared, panel, p, occ, info.series, entries);
+  draw_over(ax, panel, cell, p, g);
+  draw_legend(ax, panel, entries, p, occ, g);
+  info.pixel_box = {panel.box.left * scale, panel.box.top * scale, panel.box.right * scale, panel.box.bottom * scale};
+  info.x_range = panel.x_range;
+  info.y_range = panel.y_range;
+  info.x_scale = ax.x.scale;
+  info.y_scale = ax.y.scale;
+  for (const auto& t : panel.x_ticks) info.x_ticks.push_back(t.value);
+  for (const auto& t : panel.y_ticks) info.y_ticks.push_back(t.value);
+  return info;
+}
+
+// The whole figure into the painter's display list: the title, then the items in document
+// order (later ones over earlier ones).
 FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   FigureInfo info;
   info.name = spec.name;
@@ -35,65 +94,29 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   info.height = static_cast<int>(std::round(spec.canvas.height * scale));
   const Guides g;
   const double W = spec.canvas.width, H = spec.canvas.height;
-  double top = spec.layout.margin;
+  const Layout& L = spec.layout;
+  double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
     Font tf{spec.title_size, *render::parse_hex_color("#222222"), true};
-    p.text(spec.title, {0.5 * W, spec.layout.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
+    p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;
   }
   // The panel grid fills the rest of the canvas.
-  const Layout& L = spec.layout;
-  const double gw = (W - 2 * L.margin - (L.cols - 1) * L.spacing) / L.cols;
-  const double gh = (H - top - L.margin - (L.rows - 1) * L.spacing) / L.rows;
+  const PanelGrid grid{L.margin,
+                       top,
+                       (W - 2 * L.margin - (L.cols - 1) * L.spacing) / L.cols,
+                       (H - top - L.margin - (L.rows - 1) * L.spacing) / L.rows,
+                       L.spacing,
+                       W,
+                       H};
   Occupancy occ(spec.canvas.width, spec.canvas.height);
   for (const Item& item : spec.items) {
     std::visit(
         [&](const auto& it) {
-          using T = std::decay_t<decltype(it)>;
-          if constexpr (std::is_same_v<T, PolylineItem>) {
-            p.stroke(it.points, it.closed, it.pen.style, it.pen.color);
-          } else if constexpr (std::is_same_v<T, PolygonItem>) {
-            p.fill(it.contours, it.rule, it.color);
-          } else if constexpr (std::is_same_v<T, CircleItem>) {
-            p.circle(it.centre, it.radius, it.fill, it.stroke);
-          } else if constexpr (std::is_same_v<T, MarkerItem>) {
-            for (Vec2 q : it.points) p.marker(it.shape, q, it.size, it.color);
-          } else if constexpr (std::is_same_v<T, TextItem>) {
-            p.text(it.text, it.at, it.font, it.anchor);
-          } else if constexpr (std::is_same_v<T, ImageItem>) {
-            Vec2 size = it.size;
-            if (!it.has_size) {
-              // Own size: inline data knows it; files are read when painted, so ask now.
-              size = {static_cast<double>(it.raster.width), static_cast<double>(it.raster.height)};
-              if (!it.raster.file.empty()) size = raster_size(it.raster);
-            }
-            p.image(it.raster, it.at.x, it.at.y, it.at.x + size.x, it.at.y + size.y);
-          } else if constexpr (std::is_same_v<T, AxesSpec>) {
-            Rect cell{0, 0, W, H};
-            if (it.cell) {
-              int r = (*it.cell)[0], c = (*it.cell)[1];
-              cell.left = L.margin + c * (gw + L.spacing);
-              cell.right = cell.left + gw;
-              cell.top = top + r * (gh + L.spacing);
-              cell.bottom = cell.top + gh;
-            }
-            Panel panel = layout_panel(it, cell, p, g);
-            draw_under(it, panel, p, g);
-            AxesInfo ai;
-            std::vector<Entry> entries;
-            draw_elements(it, panel, p, occ, ai.series, entries);
-            draw_over(it, panel, cell, p, g);
-            draw_legend(it, panel, entries, p, occ, g);
-            ai.pixel_box = {panel.box.left * scale, panel.box.top * scale, panel.box.right * scale,
-                            panel.box.bottom * scale};
-            ai.x_range = panel.x_range;
-            ai.y_range = panel.y_range;
-            ai.x_scale = it.x.scale;
-            ai.y_scale = it.y.scale;
-            for (const auto& t : panel.x_ticks) ai.x_ticks.push_back(t.value);
-            for (const auto& t : panel.y_ticks) ai.y_ticks.push_back(t.value);
-            info.axes.push_back(std::move(ai));
-          }
+          if constexpr (std::is_same_v<std::decay_t<decltype(it)>, AxesSpec>)
+            info.axes.push_back(draw_axes(it, grid.cell(it), scale, p, occ, g));
+          else
+            draw_item(it, p);
         },
         item);
   }

@@ -2,12 +2,14 @@
 // Internal: drawing one axes panel. Layout (ranges, box, ticks) in plot_layout.cpp, plot
 // elements in plot_elements.cpp, guides (frame, ticks, labels, legend) in plot_guides.cpp.
 // All coordinates here are layout units (1x pixels); the painter scales them.
+#include "generated.hpp"
 #include "painter.hpp"
 
 #include <splinefig/figures/figure.hpp>
 #include <splinefig/figures/sampling.hpp>
 
 #include <cstdint>
+#include <map>
 
 namespace splinefig::figures::detail {
 
@@ -62,20 +64,33 @@ struct Entry {
   double marker_size = 6;
 };
 
+// An axes ready to be laid out and drawn: its generated elements replaced by what they
+// generate (generated.hpp) and each spline curve built once.
+struct PreparedAxes {
+  AxesSpec axes;
+  std::map<size_t, Curve> curves;              // per CurveElement, by element index
+  std::vector<std::pair<size_t, Path>> paths;  // series whose points are sampled from a path
+  std::vector<std::pair<size_t, std::string>> generated;  // series of generated elements, with where
+};
+// Traced series get rough points (enough for the data range) until sample_paths().
+PreparedAxes prepare_axes(const AxesSpec& ax);
+// Also checks that generated series stay where log axes can show them (throws SpecFileError).
+void sample_paths(PreparedAxes& prepared, const PixelMap& map, double tolerance);
+
 // Pixel position of a tick (db axes: the tick value is in dB already).
 double tick_pixel(const AxisMap& m, double value);
 
 // Data bounds of the elements (for axes without a range).
-void data_bounds(const AxesSpec& ax, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& has_x, bool& has_y);
+void data_bounds(const PreparedAxes& ax, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& has_x, bool& has_y);
 
 // Lays the panel out inside `cell`.
-Panel layout_panel(const AxesSpec& ax, const Rect& cell, const Painter& p, const Guides& g);
+Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter& p, const Guides& g);
 
 // Draws grid and zero lines (under the data).
 void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
 // Draws the elements; returns the series for index.json and the legend entries.
-void draw_elements(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy& occ, std::vector<SeriesInfo>& series,
-                   std::vector<Entry>& legend);
+void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occupancy& occ,
+                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend);
 // Frame, ticks, tick labels, axis labels, title (over the data), then the legend.
 void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter& p, const Guides& g);
 void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,

@@ -16,16 +16,16 @@ void grow(std::array<double, 2>& b, bool& has, double v) {
 
 }  // namespace
 
-void data_bounds(const AxesSpec& ax, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& hx, bool& hy) {
+void data_bounds(const PreparedAxes& prepared, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& hx,
+                 bool& hy) {
   hx = hy = false;
   auto add = [&](Vec2 p) { grow(xb, hx, p.x), grow(yb, hy, p.y); };
-  for (const auto& e : ax.elements) {
-    if (const auto* c = std::get_if<CurveElement>(&e)) {
-      Points knots(2);
-      for (Vec2 k : c->knots) knots.push_back(std::array<double, 2>{k.x, k.y});
-      Curve curve = make_curve(c->basis, knots, c->ends);
-      Points s = sample(curve, 32);
-      for (size_t i = 0; i < s.size(); ++i) add({s[i][0], s[i][1]});
+  const auto& elements = prepared.axes.elements;
+  for (size_t i = 0; i < elements.size(); ++i) {
+    const PlotElement& e = elements[i];
+    if (std::holds_alternative<CurveElement>(e)) {
+      Points s = sample(prepared.curves.at(i), 32);
+      for (size_t j = 0; j < s.size(); ++j) add({s[j][0], s[j][1]});
     } else if (const auto* k = std::get_if<KernelElement>(&e)) {
       Support sup = kernel_support(k->basis);
       double s0 = k->range ? (*k->range)[0] : sup.lo, s1 = k->range ? (*k->range)[1] : sup.hi;
@@ -115,10 +115,11 @@ double tick_pixel(const AxisMap& m, double value) {
   return m.to_pixel(value);
 }
 
-Panel layout_panel(const AxesSpec& ax, const Rect& cell, const Painter& p, const Guides& g) {
+Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter& p, const Guides& g) {
+  const AxesSpec& ax = prepared.axes;
   std::array<double, 2> xb{}, yb{};
   bool hx, hy;
-  data_bounds(ax, xb, yb, hx, hy);
+  data_bounds(prepared, xb, yb, hx, hy);
   const std::array<double, 2> xr0 = auto_range(ax.x, xb, hx), yr0 = auto_range(ax.y, yb, hy);
 
   const bool guides = ax.frame != Frame::None;

@@ -33,6 +33,19 @@ struct PixelPoly {
   }
 };
 
+// A data-space piece mapped by an affine map: the coefficients scale, the constant term
+// also shifts.
+PixelPoly in_pixels(const PixelPoly& data, const PixelMap& map) {
+  const double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
+  const double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
+  PixelPoly px = data;
+  for (auto& v : px.cx) v *= sx;
+  for (auto& v : px.cy) v *= sy;
+  px.cx[0] = map.x.to_pixel(data.cx[0]);
+  px.cy[0] = map.y.to_pixel(data.cy[0]);
+  return px;
+}
+
 // Uniform steps of a polynomial piece over [u0, u1], appending (skipping the first point
 // when `skip_first`).
 void sample_poly(const PixelPoly& p, double u0, double u1, double tol, bool skip_first, std::vector<Vec2>& out) {
@@ -48,23 +61,31 @@ double chord_distance(Vec2 p, Vec2 a, Vec2 b) {
   return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
 }
 
-// Recursive flatness subdivision of any map u -> pixel (for log axes).
-void sample_recursive(const std::function<Vec2(double)>& f, double u0, double u1, Vec2 a, Vec2 b, double tol,
-                      int depth, std::vector<Vec2>& out) {
+// Recursive flatness subdivision of any map u -> pixel: emit(u, f(u)) for the end of every
+// chord, left to right. A piece is cut at least `min_depth` times and at most 18 times.
+template <class Emit>
+void subdivide(const std::function<Vec2(double)>& f, double u0, double u1, Vec2 a, Vec2 b, double tol, int depth,
+               int min_depth, Emit&& emit) {
   double um = 0.5 * (u0 + u1);
   Vec2 m = f(um);
   bool flat = depth >= 18;
   if (!flat) {
     Vec2 q1 = f(0.5 * (u0 + um)), q3 = f(0.5 * (um + u1));
-    flat = depth >= 2 && chord_distance(m, a, b) <= tol && chord_distance(q1, a, b) <= tol &&
+    flat = depth >= min_depth && chord_distance(m, a, b) <= tol && chord_distance(q1, a, b) <= tol &&
            chord_distance(q3, a, b) <= tol;
   }
   if (flat || !std::isfinite(m.x) || !std::isfinite(m.y)) {
-    out.push_back(b);
+    emit(u1, b);
     return;
   }
-  sample_recursive(f, u0, um, a, m, tol, depth + 1, out);
-  sample_recursive(f, um, u1, m, b, tol, depth + 1, out);
+  subdivide(f, u0, um, a, m, tol, depth + 1, min_depth, emit);
+  subdivide(f, um, u1, m, b, tol, depth + 1, min_depth, emit);
+}
+
+// For log axes: the points of the chords' ends.
+void sample_recursive(const std::function<Vec2(double)>& f, double u0, double u1, Vec2 a, Vec2 b, double tol,
+                      std::vector<Vec2>& out) {
+  subdivide(f, u0, u1, a, b, tol, 0, 2, [&](double, Vec2 p) { out.push_back(p); });
 }
 
 void append_unique(std::vector<Vec2>& out, Vec2 p) {
@@ -88,20 +109,12 @@ std::vector<Vec2> sample_curve(const Curve& c, const PixelMap& map, double tol) 
       data.cy[n - r] = dim > 1 ? a[r * dim + 1] : 0;
     }
     if (map.affine()) {
-      // Affine: scale the coefficients; the constant term also shifts.
-      double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
-      double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
-      PixelPoly px = data;
-      for (auto& v : px.cx) v *= sx;
-      for (auto& v : px.cy) v *= sy;
-      px.cx[0] = map.x.to_pixel(data.cx[0]);
-      px.cy[0] = map.y.to_pixel(data.cy[0]);
-      sample_poly(px, 0, 1, tol, i > 0, raw);
+      sample_poly(in_pixels(data, map), 0, 1, tol, i > 0, raw);
     } else {
       auto f = [&](double u) { return map(data.at(u)); };
       Vec2 p0 = f(0);
       if (i == 0) raw.push_back(p0);
-      sample_recursive(f, 0, 1, p0, f(1), tol, 0, raw);
+      sample_recursive(f, 0, 1, p0, f(1), tol, raw);
     }
   }
   std::vector<Vec2> out;
@@ -127,18 +140,11 @@ std::vector<std::vector<Vec2>> sample_kernel(const Basis& b, double s0, double s
     for (int r = 0; r <= n; ++r) data.cy[n - r] = scale * b(r, col);
     auto& out = pieces[p];
     if (map.affine()) {
-      double sx = (map.x.p1 - map.x.p0) / (map.x.d1 - map.x.d0);
-      double sy = (map.y.p1 - map.y.p0) / (map.y.d1 - map.y.d0);
-      PixelPoly px = data;
-      for (auto& v : px.cx) v *= sx;
-      for (auto& v : px.cy) v *= sy;
-      px.cx[0] = map.x.to_pixel(data.cx[0]);
-      px.cy[0] = map.y.to_pixel(data.cy[0]);
-      sample_poly(px, u0, u1, tol, false, out);
+      sample_poly(in_pixels(data, map), u0, u1, tol, false, out);
     } else {
       auto f = [&](double u) { return map(data.at(u)); };
       out.push_back(f(u0));
-      sample_recursive(f, u0, u1, out.back(), f(u1), tol, 0, out);
+      sample_recursive(f, u0, u1, out.back(), f(u1), tol, out);
     }
   }
   // Zero outside the support.
@@ -152,6 +158,14 @@ std::vector<std::vector<Vec2>> sample_kernel(const Basis& b, double s0, double s
   if (s1 > sup.hi && last != pieces.rend()) last->push_back(map({s1, 0.0}));
   else if (s1 > sup.hi && s0 >= sup.hi) pieces.back() = {map({s0, 0.0}), map({s1, 0.0})};
   return pieces;
+}
+
+std::vector<double> flat_parameters(const std::function<Vec2(double)>& f, double u0, double u1, double tol,
+                                    int min_depth) {
+  std::vector<double> out;
+  if (!(u1 > u0)) return out;
+  subdivide(f, u0, u1, f(u0), f(u1), tol, 0, min_depth, [&](double u, Vec2) { out.push_back(u); });
+  return out;
 }
 
 }  // namespace splinefig::figures

@@ -53,6 +53,11 @@ Raster parse_raster(TableReader& r, const ParseContext& ctx) {
   return raster;
 }
 
+render::Marker parse_marker_shape(TableReader& r, std::string_view key, render::Marker fallback) {
+  return static_cast<render::Marker>(
+      r.choice(key, {"circle", "square", "diamond", "cross", "plus"}, static_cast<int>(fallback)));
+}
+
 namespace {
 
 void check_canvas(TableReader& r, const Canvas& c) {
@@ -133,9 +138,7 @@ PolygonItem parse_polygon(TableReader& r) {
 
 CircleItem parse_circle(TableReader& r) {
   CircleItem c;
-  auto centre = r.opt_point("center");
-  if (!centre) r.fail("center", "a circle needs center = [x, y]");
-  c.centre = *centre;
+  c.centre = r.required_point("center", "a circle needs center = [x, y]");
   c.radius = r.positive("radius", 1);
   c.fill = r.opt_color("fill");
   if (auto s = r.opt_color("stroke")) {
@@ -147,11 +150,6 @@ CircleItem parse_circle(TableReader& r) {
   if (!c.fill && !c.stroke) c.fill = Color{0, 0, 0, 1};
   r.finish();
   return c;
-}
-
-render::Marker parse_marker_shape(TableReader& r, std::string_view key, render::Marker fallback) {
-  return static_cast<render::Marker>(
-      r.choice(key, {"circle", "square", "diamond", "cross", "plus"}, static_cast<int>(fallback)));
 }
 
 MarkerItem parse_marker(TableReader& r) {
@@ -171,12 +169,8 @@ MarkerItem parse_marker(TableReader& r) {
 
 TextItem parse_text(TableReader& r) {
   TextItem t;
-  auto at = r.opt_point("at");
-  if (!at) r.fail("at", "text needs at = [x, y]");
-  t.at = *at;
-  auto text = r.opt_label("text");
-  if (!text) r.fail("text", "text needs text = \"...\"");
-  t.text = *text;
+  t.at = r.required_point("at", "text needs at = [x, y]");
+  t.text = r.required_label("text", "text needs text = \"...\"");
   t.font = r.font(t.font);
   t.anchor = r.anchor(t.anchor);
   r.finish();
@@ -199,15 +193,10 @@ ImageItem parse_image(TableReader& r, const ParseContext& ctx) {
 
 }  // namespace
 
+// Reads every [key] / [[key]] table as an item, with its source line (for document order).
 template <class F>
-static void collect(TableReader& r, std::string_view key, std::vector<std::pair<size_t, Item>>& out, F&& make) {
-  int i = 0;
-  const toml::node* n = r.node(key);
-  const bool single = n && n->is_table();  // [key] rather than [[key]]
-  for (const toml::table* t : r.tables(key)) {
-    TableReader sub(*t, r.file(), single ? std::string(key) : std::string(key) + "[" + std::to_string(i++) + "]");
-    out.emplace_back(t->source().begin.line, make(sub, *t));
-  }
+static void collect(TableReader& r, std::string_view key, std::vector<std::pair<size_t, Item>>& out, F&& read) {
+  r.each_table(key, [&](TableReader& sub, const toml::table& t) { out.emplace_back(t.source().begin.line, read(sub, t)); });
 }
 
 }  // namespace detail
@@ -281,7 +270,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   collect(r, "marker", items, [](TableReader& s, const toml::table&) { return Item{parse_marker(s)}; });
   collect(r, "text", items, [](TableReader& s, const toml::table&) { return Item{parse_text(s)}; });
   collect(r, "image", items, [&](TableReader& s, const toml::table&) { return Item{parse_image(s, ctx)}; });
-  collect(r, "axes", items, [&](TableReader& s, const toml::table& t) { return Item{parse_axes(t, s.path(), ctx)}; });
+  collect(r, "axes", items, [&](TableReader& s, const toml::table&) { return Item{parse_axes(s, ctx)}; });
   r.finish();
   std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [line, item] : items) spec.items.push_back(std::move(item));

@@ -9,10 +9,20 @@ struct ParseContext {
   std::string base_dir;  // resolves relative image paths
 };
 
-AxesSpec parse_axes(const toml::table& table, const std::string& path, const ParseContext& ctx);
+AxesSpec parse_axes(TableReader& r, const ParseContext& ctx);
 Raster parse_raster(TableReader& r, const ParseContext& ctx);
 // Checks a basis spec with the spline core; returns the basis or fails naming `key`.
 Basis checked_basis(TableReader& r, std::string_view key, const std::string& spec);
 Labelling parse_labelling(TableReader& r);
+render::Marker parse_marker_shape(TableReader& r, std::string_view key, render::Marker fallback);
+
+// The keys of a series' look over the defaults of a curve (2 px, round), a control polygon
+// (1 px grey dashed, with dots) or a point set (dots).
+enum class LookDefault { Curve, Polygon, Points };
+SeriesLook parse_series_look(TableReader& r, LookDefault defaults);
+
+// Every generated element of one [axes] table (companion texts, filter figures), each with
+// the source line of its table (for document order).
+void parse_generated_elements(TableReader& r, std::vector<std::pair<size_t, PlotElement>>& elements);
 
 }  // namespace splinefig::figures::detail

@@ -1,7 +1,5 @@
 // The figure spec loader, part 2: [axes] panels and their plot elements (docs/spec.md).
 #include "spec_parse.hpp"
-#include "companion_figures.hpp"
-#include "filter_figures.hpp"
 
 #include <splinefig/figures/palette.hpp>
 
@@ -84,7 +82,7 @@ CurveElement parse_curve(TableReader& r) {
   c.mark_size = r.positive("mark_size", c.mark_size);
   c.mark_color = r.opt_color("mark_color");
   c.color = r.opt_color("color");
-  c.style = r.stroke(curve_stroke());
+  c.stroke = r.stroke(curve_stroke());
   c.label = parse_labelling(r);
   c.show_knots = r.boolean("show_knots", false);
   c.knot_size = r.positive("knot_size", c.knot_size);
@@ -111,41 +109,17 @@ KernelElement parse_kernel(TableReader& r) {
     r.fail("labels", "the kernel has " + std::to_string(pieces) + " pieces, " + std::to_string(k.piece_labels.size()) + " labels given");
   if (k.color && !k.piece_colors.empty()) r.fail("colors", "give either color or colors, not both");
   k.scale = r.number("scale", 1);
-  k.style = r.stroke(curve_stroke());
+  k.stroke = r.stroke(curve_stroke());
   k.label = parse_labelling(r);
   k.show_knots = r.boolean("show_knots", false);
   k.knot_size = r.positive("knot_size", k.knot_size);
   return k;
 }
 
-enum class SeriesKind { Series, Polygon, Markers };
-
-SeriesElement parse_series(TableReader& r, SeriesKind kind) {
+SeriesElement parse_series(TableReader& r, LookDefault defaults, const char* what) {
   SeriesElement s;
-  const char* what = kind == SeriesKind::Polygon ? "a control polygon" : kind == SeriesKind::Markers ? "markers" : "a series";
   s.points = xy_data(r, true, what);
-  render::StrokeStyle st = curve_stroke();
-  if (kind == SeriesKind::Polygon) {
-    st.width = 1;
-    st.join = render::Join::Miter;
-    st.cap = render::Cap::Butt;
-    st.dashes = {5, 3};
-    s.style = SeriesStyle::LineMarkers;
-    s.color = kGrey;
-    s.marker_size = 6;
-  } else if (kind == SeriesKind::Markers) {
-    s.style = SeriesStyle::Markers;
-  }
-  s.style = static_cast<SeriesStyle>(
-      r.choice("style", {"line", "markers", "line+markers", "steps", "stems"}, static_cast<int>(s.style)));
-  s.closed = r.boolean("closed", false);
-  if (auto c = r.opt_color("color")) s.color = c;
-  s.style_stroke = r.stroke(st);
-  s.marker = static_cast<render::Marker>(
-      r.choice("marker", {"circle", "square", "diamond", "cross", "plus"}, static_cast<int>(s.marker)));
-  s.marker_size = r.positive("marker_size", s.marker_size);
-  s.marker_color = r.opt_color("marker_color");
-  s.label = parse_labelling(r);
+  s.look = parse_series_look(r, defaults);
   return s;
 }
 
@@ -179,12 +153,8 @@ FillElement parse_fill(TableReader& r) {
 
 TextElement parse_text_element(TableReader& r) {
   TextElement t;
-  auto at = r.opt_point("at");
-  if (!at) r.fail("at", "text needs at = [x, y] (data)");
-  t.at = *at;
-  auto text = r.opt_label("text");
-  if (!text) r.fail("text", "text needs text = \"...\"");
-  t.text = *text;
+  t.at = r.required_point("at", "text needs at = [x, y] (data)");
+  t.text = r.required_label("text", "text needs text = \"...\"");
   t.offset = r.opt_point("offset").value_or(Vec2{0, 0});
   t.font = r.font(t.font);
   t.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
@@ -193,15 +163,9 @@ TextElement parse_text_element(TableReader& r) {
 
 AnnotationElement parse_annotation(TableReader& r) {
   AnnotationElement a;
-  auto at = r.opt_point("at");
-  auto to = r.opt_point("to");
-  if (!at) r.fail("at", "an annotation needs at = [x, y] (the text, data)");
-  if (!to) r.fail("to", "an annotation needs to = [x, y] (the arrow's tip, data)");
-  a.at = *at;
-  a.to = *to;
-  auto text = r.opt_label("text");
-  if (!text) r.fail("text", "an annotation needs text = \"...\"");
-  a.text = *text;
+  a.at = r.required_point("at", "an annotation needs at = [x, y] (the text, data)");
+  a.to = r.required_point("to", "an annotation needs to = [x, y] (the arrow's tip, data)");
+  a.text = r.required_label("text", "an annotation needs text = \"...\"");
   a.font = r.font(a.font);
   a.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
   a.arrow_color = r.color("arrow_color", a.font.color);
@@ -235,8 +199,32 @@ ImageElement parse_image_element(TableReader& r, const ParseContext& ctx) {
 
 }  // namespace
 
-AxesSpec parse_axes(const toml::table& table, const std::string& path, const ParseContext& ctx) {
-  TableReader r(table, ctx.file, path);
+SeriesLook parse_series_look(TableReader& r, LookDefault defaults) {
+  SeriesLook look;
+  look.stroke = curve_stroke();
+  if (defaults == LookDefault::Polygon) {
+    look.stroke.width = 1;
+    look.stroke.join = render::Join::Miter;
+    look.stroke.cap = render::Cap::Butt;
+    look.stroke.dashes = {5, 3};
+    look.mode = SeriesMode::LineMarkers;
+    look.color = kGrey;
+  } else if (defaults == LookDefault::Points) {
+    look.mode = SeriesMode::Markers;
+  }
+  look.mode = static_cast<SeriesMode>(
+      r.choice("style", {"line", "markers", "line+markers", "steps", "stems"}, static_cast<int>(look.mode)));
+  look.closed = r.boolean("closed", false);
+  if (auto c = r.opt_color("color")) look.color = c;
+  look.stroke = r.stroke(look.stroke);
+  look.marker = parse_marker_shape(r, "marker", look.marker);
+  look.marker_size = r.positive("marker_size", look.marker_size);
+  look.marker_color = r.opt_color("marker_color");
+  look.label = parse_labelling(r);
+  return look;
+}
+
+AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   AxesSpec ax;
   ax.where = r.where();
   parse_axis(r, 'x', ax.x);
@@ -266,29 +254,23 @@ AxesSpec parse_axes(const toml::table& table, const std::string& path, const Par
   }
 
   std::vector<std::pair<size_t, PlotElement>> elements;
-  auto each = [&](std::string_view key, auto&& make) {
-    int i = 0;
-    const toml::node* n = r.node(key);
-    const bool single = n && n->is_table();
-    for (const toml::table* t : r.tables(key)) {
-      TableReader sub(*t, ctx.file, single ? r.key_path(key) : r.key_path(key) + "[" + std::to_string(i++) + "]");
-      elements.emplace_back(t->source().begin.line, PlotElement{make(sub)});
-      sub.finish();
-    }
+  auto each = [&](std::string_view key, auto&& read) {
+    r.each_table(key, [&](TableReader& sub, const toml::table& t) {
+      elements.emplace_back(t.source().begin.line, PlotElement{read(sub)});
+    });
   };
-  each("curve", [](TableReader& s) { return parse_curve(s); });
-  each("kernel", [](TableReader& s) { return parse_kernel(s); });
-  each("series", [](TableReader& s) { return parse_series(s, SeriesKind::Series); });
-  each("polygon", [](TableReader& s) { return parse_series(s, SeriesKind::Polygon); });
-  each("markers", [](TableReader& s) { return parse_series(s, SeriesKind::Markers); });
-  each("fill", [](TableReader& s) { return parse_fill(s); });
-  each("text", [](TableReader& s) { return parse_text_element(s); });
-  each("annotation", [](TableReader& s) { return parse_annotation(s); });
+  each("curve", parse_curve);
+  each("kernel", parse_kernel);
+  each("series", [](TableReader& s) { return parse_series(s, LookDefault::Curve, "a series"); });
+  each("polygon", [](TableReader& s) { return parse_series(s, LookDefault::Polygon, "a control polygon"); });
+  each("markers", [](TableReader& s) { return parse_series(s, LookDefault::Points, "markers"); });
+  each("fill", parse_fill);
+  each("text", parse_text_element);
+  each("annotation", parse_annotation);
   each("hline", [](TableReader& s) { return parse_rule(s, true); });
   each("vline", [](TableReader& s) { return parse_rule(s, false); });
   each("image", [&](TableReader& s) { return parse_image_element(s, ctx); });
-  parse_companion_elements(r, elements);  // docs/companion.md
-  parse_filter_elements(r, ctx, elements);  // docs/resample.md
+  parse_generated_elements(r, elements);  // docs/companion.md, docs/resample.md
   r.finish();
   std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [line, e] : elements) ax.elements.push_back(std::move(e));

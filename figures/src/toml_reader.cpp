@@ -48,6 +48,12 @@ std::string TableReader::key_path(std::string_view key) const {
   return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
 }
 
+std::string TableReader::origin(std::string_view key) const {
+  const toml::node* n = table_.get(key);
+  const std::string loc = n && n->source().begin.line != 0 ? line_of(file_, n->source()) : where();
+  return loc + ": " + (key.empty() ? path_ : key_path(key));
+}
+
 void TableReader::fail(std::string_view key, const std::string& message) const {
   if (const toml::node* n = table_.get(key)) fail_at(*n, key, message);
   throw SpecFileError(where() + ": " + (key.empty() ? path_ : key_path(key)) + ": " + message);
@@ -243,6 +249,18 @@ std::vector<std::vector<double>> TableReader::matrix(std::string_view key) {
     out.push_back(std::move(v));
   }
   return out;
+}
+
+Vec2 TableReader::required_point(std::string_view key, const std::string& missing) {
+  auto p = opt_point(key);
+  if (!p) fail(key, missing);
+  return *p;
+}
+
+std::string TableReader::required_label(std::string_view key, const std::string& missing) {
+  auto t = opt_label(key);
+  if (!t) fail(key, missing);
+  return *t;
 }
 
 std::vector<const toml::table*> TableReader::tables(std::string_view key) {

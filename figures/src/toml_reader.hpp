@@ -42,10 +42,27 @@ class TableReader {
   std::vector<std::string> strings(std::string_view key);
   std::optional<Vec2> opt_point(std::string_view key);
   std::vector<Vec2> points(std::string_view key);  // [[x,y], ...]; [] if absent
+  // Keys that must be there: fail with `missing` when they are not.
+  Vec2 required_point(std::string_view key, const std::string& missing);
+  std::string required_label(std::string_view key, const std::string& missing);
   std::vector<std::vector<double>> matrix(std::string_view key);  // rows of numbers
 
   // Sub-tables: [key] (at most one) or [[key]] (any number), in document order.
   std::vector<const toml::table*> tables(std::string_view key);
+  // Calls read(sub, table) for each of them, `sub` reading the table under the key path
+  // "KEY" ([key]) or "KEY[i]" ([[key]]) below this one; then sub.finish() rejects the keys
+  // that read() never asked for.
+  template <class F>
+  void each_table(std::string_view key, F&& read) {
+    const toml::node* n = node(key);
+    const bool single = n && n->is_table();
+    int i = 0;
+    for (const toml::table* t : tables(key)) {
+      TableReader sub(*t, file_, single ? key_path(key) : key_path(key) + "[" + std::to_string(i++) + "]");
+      read(sub, *t);
+      sub.finish();
+    }
+  }
 
   // Throws for the first key that was never read.
   void finish() const;
@@ -54,6 +71,8 @@ class TableReader {
   [[noreturn]] void fail_at(const toml::node& node, std::string_view key, const std::string& message) const;
   std::string where() const;  // "FILE:LINE" of the table
   std::string key_path(std::string_view key) const;
+  // "FILE:LINE: KEY", the prefix of fail(key, ...): for checks made after loading.
+  std::string origin(std::string_view key) const;
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
 

@@ -2,11 +2,15 @@
 #include <splinefig/spline/curve.hpp>
 #include <splinefig/spline/segment.hpp>
 
+#include "weight_table.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 namespace splinefig {
 
@@ -108,52 +112,6 @@ std::size_t sample_count(const Curve& c, int grain) {
 
 namespace {
 
-// One piece after another: out[k] = sum_c E_c[k] q_c[k], where E_c[j*D + d] = w_c(j/grain)
-// (the weight table, computed once) and q_c repeats control point c's coordinates with
-// period D. Blocks of L = lcm(D, 4) outputs use one register pattern per control point, so
-// each output coordinate costs order multiply-adds and the stores are contiguous.
-template <int D>
-void sample_cubic(const double* ctrl, std::size_t pieces, int grain, const double* E, double* out) {
-  constexpr int L = D == 3 ? 12 : (D == 1 || D == 2 || D == 4) ? 4 : D * 4;
-  const std::size_t K = static_cast<std::size_t>(grain) * D;
-  const std::size_t Kb = K - K % L;
-  const double *E0 = E, *E1 = E + K, *E2 = E + 2 * K, *E3 = E + 3 * K;
-  for (std::size_t i = 0; i < pieces; ++i) {
-    const double* p = ctrl + i * D;
-    double q0[L], q1[L], q2[L], q3[L];
-    for (int m = 0; m < L; ++m) {
-      q0[m] = p[m % D];
-      q1[m] = p[D + m % D];
-      q2[m] = p[2 * D + m % D];
-      q3[m] = p[3 * D + m % D];
-    }
-    double* o = out + i * K;
-    for (std::size_t k = 0; k < Kb; k += L)
-      for (int m = 0; m < L; ++m)
-        o[k + m] = E0[k + m] * q0[m] + E1[k + m] * q1[m] + E2[k + m] * q2[m] + E3[k + m] * q3[m];
-    for (std::size_t k = Kb; k < K; ++k) {
-      const std::size_t m = k % D;
-      o[k] = E0[k] * q0[m] + E1[k] * q1[m] + E2[k] * q2[m] + E3[k] * q3[m];
-    }
-  }
-}
-
-// Any degree, any dimension: the same sums, without the fixed-size patterns.
-void sample_generic(const double* ctrl, std::size_t pieces, int grain, int order, int dim,
-                    const double* E, double* out) {
-  const std::size_t K = static_cast<std::size_t>(grain) * static_cast<std::size_t>(dim);
-  for (std::size_t i = 0; i < pieces; ++i) {
-    const double* p = ctrl + i * static_cast<std::size_t>(dim);
-    double* o = out + i * K;
-    for (std::size_t k = 0; k < K; ++k) {
-      const std::size_t d = k % static_cast<std::size_t>(dim);
-      double v = E[k] * p[d];
-      for (int c = 1; c < order; ++c) v += E[static_cast<std::size_t>(c) * K + k] * p[static_cast<std::size_t>(c * dim) + d];
-      o[k] = v;
-    }
-  }
-}
-
 // Compiled twice where the compiler can (x86-64 GCC/Clang): for AVX2 and for the baseline,
 // chosen at load time. No FMA contraction either way (ISO C++ mode), so both give the
 // same bits.
@@ -162,11 +120,23 @@ __attribute__((target_clones("avx2", "default"), flatten))
 #endif
 void sample_pieces(const double* ctrl, std::size_t pieces, int grain, int order, int dim, const double* E,
                    double* o) {
-  if (order == 4 && dim == 1) sample_cubic<1>(ctrl, pieces, grain, E, o);
-  else if (order == 4 && dim == 2) sample_cubic<2>(ctrl, pieces, grain, E, o);
-  else if (order == 4 && dim == 3) sample_cubic<3>(ctrl, pieces, grain, E, o);
-  else if (order == 4 && dim == 4) sample_cubic<4>(ctrl, pieces, grain, E, o);
-  else sample_generic(ctrl, pieces, grain, order, dim, E, o);
+  // One piece after another (weight_table.hpp); piece i's control points start at point i.
+  const std::size_t D = static_cast<std::size_t>(dim), n = static_cast<std::size_t>(order);
+  const std::size_t K = static_cast<std::size_t>(grain) * D;
+  auto each = [&](auto fixed) {
+    constexpr std::size_t F = decltype(fixed)::value;
+    for (std::size_t i = 0; i < pieces; ++i) detail::apply_weights<F>(E, K, ctrl + i * F, n, o + i * K);
+  };
+  switch (D) {
+    case 1: each(std::integral_constant<std::size_t, 1>{}); break;
+    case 2: each(std::integral_constant<std::size_t, 2>{}); break;
+    case 3: each(std::integral_constant<std::size_t, 3>{}); break;
+    case 4: each(std::integral_constant<std::size_t, 4>{}); break;
+    default: {
+      std::vector<double> Q(n * 4 * D);
+      for (std::size_t i = 0; i < pieces; ++i) detail::apply_weights(E, K, ctrl + i * D, n, D, Q.data(), o + i * K);
+    }
+  }
 }
 
 }  // namespace

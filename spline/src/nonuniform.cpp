@@ -1,6 +1,8 @@
 // Cox-de Boor basis functions, de Boor's algorithm, derivative curves and knot insertion.
 #include <splinefig/spline/nonuniform.hpp>
 
+#include "weight_table.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -159,58 +161,6 @@ void evaluate(const BSplineCurve& c, double t, int derivative_order, std::span<d
   de_boor(d, t, out);
 }
 
-namespace {
-
-// out[k] = sum_i E_i[k] P_i[k mod D] for k < K (E_i = E + i*K): blocks of L = 4D outputs
-// against control coordinates repeated with the same period, so the inner loops are
-// contiguous and of fixed length.
-template <std::size_t D>
-void apply_span(const double* E, std::size_t K, const double* P, std::size_t p, double* o) {
-  constexpr std::size_t L = 4 * D;
-  std::size_t k0 = 0;
-  for (; k0 + L <= K; k0 += L) {
-    double acc[L];
-    for (std::size_t m = 0; m < L; ++m) acc[m] = E[k0 + m] * P[m % D];
-    for (std::size_t i = 1; i <= p; ++i) {
-      const double* e = E + i * K + k0;
-      const double* pi = P + i * D;
-      for (std::size_t m = 0; m < L; ++m) acc[m] += e[m] * pi[m % D];
-    }
-    for (std::size_t m = 0; m < L; ++m) o[k0 + m] = acc[m];
-  }
-  for (; k0 < K; ++k0) {
-    double v = 0;
-    for (std::size_t i = 0; i <= p; ++i) v += E[i * K + k0] * P[i * D + k0 % D];
-    o[k0] = v;
-  }
-}
-
-// The same for any dimension, with the period spelled out in Q ((p+1) x 4*dim scratch).
-void apply_span_generic(const double* E, std::size_t K, const double* P, std::size_t p, std::size_t dim,
-                        double* Q, double* o) {
-  const std::size_t L = 4 * dim;
-  for (std::size_t i = 0; i <= p; ++i)
-    for (std::size_t r = 0; r < 4; ++r)
-      for (std::size_t q = 0; q < dim; ++q) Q[i * L + r * dim + q] = P[i * dim + q];
-  std::size_t k0 = 0;
-  for (; k0 + L <= K; k0 += L) {
-    double* ob = o + k0;
-    for (std::size_t m = 0; m < L; ++m) ob[m] = E[k0 + m] * Q[m];
-    for (std::size_t i = 1; i <= p; ++i) {
-      const double* e = E + i * K + k0;
-      const double* qi = Q + i * L;
-      for (std::size_t m = 0; m < L; ++m) ob[m] += e[m] * qi[m];
-    }
-  }
-  for (; k0 < K; ++k0) {
-    double v = 0;
-    for (std::size_t i = 0; i <= p; ++i) v += E[i * K + k0] * P[i * dim + k0 % dim];
-    o[k0] = v;
-  }
-}
-
-}  // namespace
-
 Points sample(const BSplineCurve& c, int grain) {
   if (grain < 1) throw std::invalid_argument("grain must be at least 1, got " + std::to_string(grain));
   const auto p = static_cast<std::size_t>(c.degree);
@@ -243,13 +193,7 @@ Points sample(const BSplineCurve& c, int grain) {
       prev_shape.swap(shape);
     }
     const double* P = c.control.coords.data() + (s - p) * dim;
-    switch (dim) {
-      case 1: apply_span<1>(E.data(), K, P, p, o); break;
-      case 2: apply_span<2>(E.data(), K, P, p, o); break;
-      case 3: apply_span<3>(E.data(), K, P, p, o); break;
-      case 4: apply_span<4>(E.data(), K, P, p, o); break;
-      default: apply_span_generic(E.data(), K, P, p, dim, Q.data(), o);
-    }
+    detail::apply_span_weights(E.data(), K, P, p + 1, dim, Q.data(), o);
     o += K;
   }
   std::vector<double> N(p + 1);

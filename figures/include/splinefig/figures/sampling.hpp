@@ -10,6 +10,7 @@
 #include <splinefig/figures/axes.hpp>
 #include <splinefig/spline/curve.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace splinefig::figures {
@@ -29,4 +30,10 @@ std::vector<Vec2> sample_curve(const Curve& curve, const PixelMap& map, double t
 // [s0, s1] come back empty.
 std::vector<std::vector<Vec2>> sample_kernel(const Basis& basis, double s0, double s1, double scale,
                                              const PixelMap& map, double tolerance);
+
+// Any smooth map u -> pixels on [u0, u1], cut into chords within `tolerance` of it by
+// recursive halving until the midpoint and quarter points of every chord are that close (at
+// least 2^min_depth chords, at most 2^18): the chords' end parameters, in (u0, u1].
+std::vector<double> flat_parameters(const std::function<Vec2(double)>& f, double u0, double u1, double tolerance,
+                                    int min_depth);
 }  // namespace splinefig::figures

@@ -129,7 +129,7 @@ struct CurveElement {
   double mark_size = 5;
   std::optional<Color> mark_color;
   std::optional<Color> color;  // unset: taken from the axes palette
-  render::StrokeStyle style;
+  render::StrokeStyle stroke;
   Labelling label;
   bool show_knots = false;
   double knot_size = 5;
@@ -144,26 +144,31 @@ struct KernelElement {
   std::vector<Color> piece_colors;             // per piece, left to right
   std::vector<std::string> piece_labels;       // per piece, left to right, inline
   double scale = 1;                            // y multiplier
-  render::StrokeStyle style;
+  render::StrokeStyle stroke;
   Labelling label;
   bool show_knots = false;                     // dots at the integer knots
   double knot_size = 5;
 };
 
-enum class SeriesStyle { Line, Markers, LineMarkers, Steps, Stems };
+enum class SeriesMode { Line, Markers, LineMarkers, Steps, Stems };
+
+// How data points are drawn: the keys of [[axes.series]] other than the data.
+struct SeriesLook {
+  SeriesMode mode = SeriesMode::Line;
+  bool closed = false;
+  std::optional<Color> color;  // unset: taken from the axes palette
+  render::StrokeStyle stroke;
+  render::Marker marker = render::Marker::Circle;
+  double marker_size = 6;
+  std::optional<Color> marker_color;
+  Labelling label;
+};
 
 // Generic data: points joined by lines, marked, stepped or stemmed. Control polygons
 // ([[axes.polygon]]) and marker sets ([[axes.markers]]) are series with other defaults.
 struct SeriesElement {
   std::vector<Vec2> points;
-  SeriesStyle style = SeriesStyle::Line;
-  bool closed = false;
-  std::optional<Color> color;
-  render::StrokeStyle style_stroke;
-  render::Marker marker = render::Marker::Circle;
-  double marker_size = 6;
-  std::optional<Color> marker_color;
-  Labelling label;
+  SeriesLook look;
 };
 
 // A filled area: between y and y2 (or a baseline) over x, or a polygon in data space.
@@ -206,8 +211,120 @@ struct ImageElement {
   std::array<double, 4> extent{};  // x0, x1, y0, y1 in data
 };
 
+// ---- Generated plot elements ----------------------------------------------------------
+// Elements whose data the layout computes with the spline library, the filter analysis or the
+// resampler (docs/companion.md, docs/resample.md). The spec holds only their parameters; the
+// layout turns them into series (curves sampled to 0.05 px like [[axes.curve]]) or an image.
+// `where` is "FILE:LINE: KEY" of the element's table and `origin` that of the key a computation
+// can reject, for messages.
+
+struct InterpElement {  // [[axes.interp]]: the spline through data
+  std::string where;
+  enum class EndMode { Relaxed, Clamped, Periodic };
+  enum class Show { Curve, Control, Bezier };
+  std::vector<Vec2> points;
+  EndMode ends = EndMode::Relaxed;
+  Show show = Show::Curve;
+  std::optional<Vec2> start_velocity, end_velocity;  // clamped ends only
+  SeriesLook look;
+  std::string origin;
+};
+
+struct RelaxedBsplineElement {  // [[axes.relaxed_bspline]]
+  std::string where;
+  enum class Show { Curve, Joints, Division, Bezier, AFrames };
+  std::vector<Vec2> points;
+  Show show = Show::Curve;
+  SeriesLook look;
+};
+
+struct BezierElement {  // [[axes.bezier]]: one Bezier curve of any degree
+  std::string where;
+  std::vector<Vec2> points;
+  SeriesLook look;
+};
+
+struct LagrangeElement {  // [[axes.lagrange]]: y(x) through the data
+  std::string where;
+  std::vector<Vec2> points;
+  std::optional<std::array<double, 2>> range;  // default: the data's x extent
+  SeriesLook look;
+  std::string origin;
+};
+
+struct RelaxedBasisElement {  // [[axes.relaxed_basis]]: f_k of relaxed interpolation
+  std::string where;
+  int n = 4, k = 0;
+  SeriesLook look;
+};
+
+struct SubdivisionElement {  // [[axes.subdivision]]
+  std::string where;
+  std::vector<Vec2> points;
+  int steps = 1;
+  bool limit = false;  // the limit points instead of the refined polygon
+  SeriesLook look;
+};
+
+struct LocalBetasElement {  // [[axes.local_betas]]: one (b1, b2) per knot
+  std::string where;
+  std::vector<Vec2> knots;
+  std::vector<std::array<double, 2>> betas;
+  Ends ends = Ends::open;
+  SeriesLook look;
+  std::string origin;
+};
+
+struct InbetweenElement {  // [[axes.inbetween]]: a frame between keyframes
+  std::string where;
+  std::vector<std::vector<Vec2>> frames;  // equally long
+  double t = 0;
+  SeriesLook look;
+};
+
+struct FilterCurveElement {  // [[axes.filter]]: k(s) of a filter spec
+  std::string where;
+  std::string filter;  // checked by the loader
+  std::optional<std::array<double, 2>> range;  // default: the support
+  SeriesLook look;
+};
+
+struct ResponseElement {  // [[axes.response]]: |K(f)|, f in cycles per sample
+  std::string where;
+  std::string filter;
+  std::array<double, 2> range{0, 2};
+  SeriesLook look;
+};
+
+struct StepElement {  // [[axes.step]]: a filter's reconstruction of samples
+  std::string where;
+  std::string filter;
+  std::vector<double> values{0, 0, 0, 0, 1, 1, 1, 1};
+  std::string edge = "clamp";  // checked by the loader
+  bool interpolating = false;
+  std::optional<std::array<double, 2>> range;  // default: [-1/2, n - 1/2]
+  SeriesLook look;
+  std::string origin;
+};
+
+struct ZoneplateElement {  // [[axes.zoneplate]]: a zone plate resampled, as an image
+  std::string where;
+  std::string filter;
+  int source = 64, size = 512;
+  std::string edge = "mirror";
+  bool interpolating = false;
+  std::array<int, 4> crop{0, 0, 512, 512};  // x, y, width, height in output pixels
+  std::array<double, 4> extent{};
+  bool nearest = true;
+  double contrast = 1;
+  std::string origin;
+};
+
 using PlotElement = std::variant<CurveElement, KernelElement, SeriesElement, FillElement, TextElement,
-                                 AnnotationElement, RuleElement, ImageElement>;
+                                 AnnotationElement, RuleElement, ImageElement, InterpElement, RelaxedBsplineElement,
+                                 BezierElement, LagrangeElement, RelaxedBasisElement, SubdivisionElement,
+                                 LocalBetasElement, InbetweenElement, FilterCurveElement, ResponseElement, StepElement,
+                                 ZoneplateElement>;
 
 enum class Scale { Linear, Log, Decibel };
 enum class Frame { Box, LeftBottom, None };

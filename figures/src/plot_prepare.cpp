@@ -1,0 +1,55 @@
+// An axes prepared for layout: generated elements computed, curves built (see plot.hpp).
+#include "plot.hpp"
+
+namespace splinefig::figures::detail {
+
+PreparedAxes prepare_axes(const AxesSpec& ax) {
+  PreparedAxes out;
+  out.axes = ax;
+  out.axes.elements.clear();
+  auto& elements = out.axes.elements;
+  for (const PlotElement& e : ax.elements) {
+    if (const auto* c = std::get_if<CurveElement>(&e)) {
+      Points knots(2);
+      for (Vec2 k : c->knots) knots.push_back(std::array<double, 2>{k.x, k.y});
+      out.curves.emplace(elements.size(), make_curve(c->basis, knots, c->ends));
+    }
+    if (!is_generated(e)) {
+      elements.push_back(e);
+      continue;
+    }
+    const std::string where = std::visit(
+        [](const auto& x) -> std::string {
+          if constexpr (requires { x.where; }) return x.where;
+          else return {};
+        },
+        e);
+    for (GeneratedPart& part : generate(e)) {
+      if (auto* g = std::get_if<GeneratedSeries>(&part)) {
+        out.generated.emplace_back(elements.size(), where);
+        if (g->path) {
+          g->series.points = rough_points(*g->path);
+          out.paths.emplace_back(elements.size(), std::move(*g->path));
+        }
+        elements.push_back(std::move(g->series));
+      } else {
+        elements.push_back(std::move(std::get<ImageElement>(part)));
+      }
+    }
+  }
+  return out;
+}
+
+void sample_paths(PreparedAxes& prepared, const PixelMap& map, double tolerance) {
+  for (const auto& [index, path] : prepared.paths)
+    std::get<SeriesElement>(prepared.axes.elements[index]).points = sample_path(path, map, tolerance);
+  const bool log_x = prepared.axes.x.scale == Scale::Log, log_y = prepared.axes.y.scale == Scale::Log;
+  if (!log_x && !log_y) return;
+  for (const auto& [index, where] : prepared.generated)
+    for (Vec2 q : std::get<SeriesElement>(prepared.axes.elements[index]).points) {
+      if (log_y && !(q.y > 0)) throw SpecFileError(where + ": a log y axis needs positive y data");
+      if (log_x && !(q.x > 0)) throw SpecFileError(where + ": a log x axis needs positive x data");
+    }
+}
+
+}  // namespace splinefig::figures::detail
