@@ -35,6 +35,7 @@ const splinefig::cli::Registration reg{
         namespace fig = splinefig::figures;
         const std::string ext = extension_of(a->out);
         if (ext != ".png" && ext != ".exr") throw Failure("-o " + a->out + ": the output must end in .png or .exr");
+        if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
         if (!(a->scale > 0) || a->scale > 64) throw Failure("--scale " + std::to_string(a->scale) + ": must be in (0, 64]");
         if (a->threads < 0) throw Failure("--threads: must not be negative");
         try {
