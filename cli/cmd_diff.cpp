@@ -86,6 +86,17 @@ int run(const DiffArgs& args) {
   o.flip_max = args.flip;
   o.perceptual = args.perceptual;
 
+  // An output over an input would destroy it: refused before anything is read or written.
+  for (const std::string* out : {&args.diff_image, &args.triptych}) {
+    if (out->empty()) continue;
+    for (const std::string* in : {&args.a, &args.b, &args.mask})
+      if (!in->empty() && same_file(*out, *in))
+        throw cli::Failure("cannot write " + *out + ": it is the input " + *in, 4);
+  }
+  if (!args.diff_image.empty() && !args.triptych.empty() &&
+      (args.diff_image == args.triptych || same_file(args.diff_image, args.triptych)))
+    throw cli::Failure("--diff-image and --triptych name the same file " + args.diff_image);
+
   const Image a = load(args.a, args.linear);
   const Image b = load(args.b, args.linear);
   std::unique_ptr<Image> mask;

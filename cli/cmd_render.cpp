@@ -35,6 +35,7 @@ const splinefig::cli::Registration reg{
         namespace fig = splinefig::figures;
         const std::string ext = extension_of(a->out);
         if (ext != ".png" && ext != ".exr") throw Failure("-o " + a->out + ": the output must end in .png or .exr");
+        if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
         splinefig::cli::check_output_scale(a->scale);
         splinefig::cli::check_threads(a->threads);
         try {

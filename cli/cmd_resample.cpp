@@ -67,6 +67,7 @@ int run(const Options& o) {
       throw Failure("-o " + o.out + ": unsupported output format '" + ext + "' (use .png or .exr)");
   }
 
+  if (same_file(o.out, o.in)) throw Failure("-o " + o.out + ": it is the input " + o.in + " (write to another file)");
   Image src;
   FileFormat format;
   try {

@@ -129,6 +129,12 @@ void remove_stale_temporaries(int dirfd, const std::string& filename) {
 
 }  // namespace
 
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  const bool same = fs::equivalent(a, b, ec);
+  return !ec && same;
+}
+
 std::string temporary_name(const std::string& filename, long pid, unsigned long n) {
   // 1 + 200 + ".splinefig-" (11) + pid (<= 20) + "-" + n (<= 20) + ".tmp" (4) < 256.
   std::string name = "." + filename.substr(0, 200);

@@ -113,3 +113,25 @@ TEST_CASE("diff rejects bad flags and unwritable outputs with one line, leaving 
   CHECK(r.err.find(out) != std::string::npos);
   CHECK_FALSE(fs::exists(out));
 }
+
+TEST_CASE("diff refuses an output that names an input, by any spelling, before writing anything") {
+  const std::string a = ramp_png("alias_a.png", false), b = ramp_png("alias_b.png", true);
+  const std::string link = scratch("alias_link.png"), hard = scratch("alias_hard.png");
+  fs::remove(link);
+  fs::remove(hard);
+  fs::create_symlink(a, link);
+  fs::create_hard_link(b, hard);
+  const std::string a_bytes = read_text(a), b_bytes = read_text(b);
+  const std::string dotted = (fs::path(a).parent_path() / "." / fs::path(a).filename()).string();
+  for (const std::string& args : {"--diff-image " + q(a), "--triptych " + q(dotted), "--diff-image " + q(link),
+                                  "--triptych " + q(hard)}) {
+    INFO(args);
+    const Run r = run_splinefig("diff " + q(a) + " " + q(b) + " " + args);
+    CHECK(r.code == 4);
+    CHECK(r.err.find("it is the input") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.out.empty());
+  }
+  CHECK(read_text(a) == a_bytes);
+  CHECK(read_text(b) == b_bytes);
+}

@@ -114,6 +114,27 @@ TEST_CASE("resample cli: bad input gives one line, a non-zero exit and no output
   for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
 }
 
+TEST_CASE("resample cli: the output may not be the input, by any spelling") {
+  const fs::path dir = scratch("alias");
+  const fs::path in = dir / "in.png";
+  write(in, 8, 6, 3, OIIO::TypeDesc::UINT8, std::vector<float>(8 * 6 * 3, 0.5f));
+  std::ifstream orig(in, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(orig)), std::istreambuf_iterator<char>());
+  fs::remove(dir / "link.png");
+  fs::remove(dir / "hard.png");
+  fs::create_symlink(in, dir / "link.png");
+  fs::create_hard_link(in, dir / "hard.png");
+  for (const fs::path& out : {in, dir / "." / "in.png", dir / "link.png", dir / "hard.png"}) {
+    INFO(out);
+    const Run r = run(q(in) + " -o " + q(out) + " --scale 2 --filter bspline");
+    CHECK(r.code != 0);
+    CHECK(r.err.find("it is the input") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  std::ifstream after(in, std::ios::binary);
+  CHECK(std::string((std::istreambuf_iterator<char>(after)), std::istreambuf_iterator<char>()) == bytes);
+}
+
 TEST_CASE("resample cli: 8-bit PNG is filtered in linear light and re-encoded as sRGB") {
   const fs::path dir = scratch("colour");
   // Black and white averaged by a box: linear 0.5, which sRGB encodes as code 188, not 128.

@@ -26,6 +26,11 @@ struct UnwritableFile : std::runtime_error {
 
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes);
 
+// True if `a` and `b` name the same existing file, by any spelling: a relative or absolute
+// path, a symbolic link or a hard link (same device and inode). Commands refuse to write an
+// output over one of their inputs with it, before reading or writing anything.
+bool same_file(const std::string& a, const std::string& b);
+
 // The temporary name write_file_atomically uses for `filename` (no directory) in a process
 // with id `pid` on its `n`-th call (exposed for tests).
 std::string temporary_name(const std::string& filename, long pid, unsigned long n);
