@@ -21,12 +21,8 @@ using namespace splinefig;
 
 struct DiffArgs {
   std::string a, b;
-  float fail = 1e-6f, failpercent = 0.0f, hardfail = std::numeric_limits<float>::infinity();
-  float warn = 1e-6f, warnpercent = 0.0f, hardwarn = std::numeric_limits<float>::infinity();
-  long long allowfailures = 0;
-  bool linear = false, ignore_alpha = false, json = false, verbose = false, quiet = false, perceptual = false;
-  int shift = 0;
-  std::optional<double> ssim, flip;
+  compare::Options o;  // the flags bind to it directly (idiff's defaults)
+  bool json = false, verbose = false, quiet = false;
   std::optional<float> scale;
   std::string mask, diff_image, triptych;
 };
@@ -58,33 +54,21 @@ void write(const std::string& path, const Image& im) {
 }
 
 int run(const DiffArgs& args) {
-  check_threshold("--fail", args.fail);
-  check_threshold("--warn", args.warn);
-  check_threshold("--hardfail", args.hardfail, true);
-  check_threshold("--hardwarn", args.hardwarn, true);
-  check_percent("--failpercent", args.failpercent);
-  check_percent("--warnpercent", args.warnpercent);
-  if (args.allowfailures < 0) throw cli::Failure("--allowfailures must be >= 0");
-  if (args.shift < 0 || args.shift > 64) throw cli::Failure("--shift must be an integer in [0, 64]");
-  if (args.ssim && !(*args.ssim >= -1.0 && *args.ssim <= 1.0)) throw cli::Failure("--ssim must be in [-1, 1]");
-  if (args.flip && !(*args.flip >= 0.0 && *args.flip <= 1.0)) throw cli::Failure("--flip must be in [0, 1]");
+  const compare::Options& o = args.o;
+  const compare::Thresholds& t = o.thresholds;
+  check_threshold("--fail", t.fail);
+  check_threshold("--warn", t.warn);
+  check_threshold("--hardfail", t.hardfail, true);
+  check_threshold("--hardwarn", t.hardwarn, true);
+  check_percent("--failpercent", t.failpercent);
+  check_percent("--warnpercent", t.warnpercent);
+  if (t.allowfailures < 0) throw cli::Failure("--allowfailures must be >= 0");
+  if (o.shift < 0 || o.shift > 64) throw cli::Failure("--shift must be an integer in [0, 64]");
+  if (o.ssim_min && !(*o.ssim_min >= -1.0 && *o.ssim_min <= 1.0)) throw cli::Failure("--ssim must be in [-1, 1]");
+  if (o.flip_max && !(*o.flip_max >= 0.0 && *o.flip_max <= 1.0)) throw cli::Failure("--flip must be in [0, 1]");
   if (args.scale && !(std::isfinite(*args.scale) && *args.scale > 0.0f))
     throw cli::Failure("--scale must be a finite number > 0");
 
-  compare::Options o;
-  o.thresholds.fail = args.fail;
-  o.thresholds.failpercent = args.failpercent;
-  o.thresholds.hardfail = args.hardfail;
-  o.thresholds.warn = args.warn;
-  o.thresholds.warnpercent = args.warnpercent;
-  o.thresholds.hardwarn = args.hardwarn;
-  o.thresholds.allowfailures = args.allowfailures;
-  o.ignore_alpha = args.ignore_alpha;
-  o.linear = args.linear;
-  o.shift = args.shift;
-  o.ssim_min = args.ssim;
-  o.flip_max = args.flip;
-  o.perceptual = args.perceptual;
 
   // An output over an input would destroy it: refused before anything is read or written.
   for (const std::string* out : {&args.diff_image, &args.triptych}) {
@@ -97,8 +81,8 @@ int run(const DiffArgs& args) {
       (args.diff_image == args.triptych || same_file(args.diff_image, args.triptych)))
     throw cli::Failure("--diff-image and --triptych name the same file " + args.diff_image);
 
-  const Image a = load(args.a, args.linear);
-  const Image b = load(args.b, args.linear);
+  const Image a = load(args.a, o.linear);
+  const Image b = load(args.b, o.linear);
   std::unique_ptr<Image> mask;
   if (!args.mask.empty()) mask = std::make_unique<Image>(load(args.mask, false));
 
@@ -130,20 +114,20 @@ const cli::Registration reg{
       auto args = std::make_shared<DiffArgs>();
       app.add_option("A", args->a, "First (expected) image")->required();
       app.add_option("B", args->b, "Second (actual) image")->required();
-      app.add_option("--fail", args->fail, "Failure threshold on a value's absolute difference (default 1e-06)");
-      app.add_option("--failpercent", args->failpercent, "Percentage of pixels allowed over --fail (default 0)");
-      app.add_option("--hardfail", args->hardfail, "Fail if any value differs by more than this (default inf)");
-      app.add_option("--warn", args->warn, "Warning threshold (default 1e-06)");
-      app.add_option("--warnpercent", args->warnpercent, "Percentage of pixels allowed over --warn (default 0)");
-      app.add_option("--hardwarn", args->hardwarn, "Warn if any value differs by more than this (default inf)");
-      app.add_option("--allowfailures", args->allowfailures, "Number of failing pixels that still pass (default 0)");
-      app.add_flag("--linear", args->linear, "Decode sRGB-encoded images (PNG) to linear light before comparing");
-      app.add_flag("--ignore-alpha", args->ignore_alpha, "Leave the alpha channel out of the comparison");
+      app.add_option("--fail", args->o.thresholds.fail, "Failure threshold on a value's absolute difference (default 1e-06)");
+      app.add_option("--failpercent", args->o.thresholds.failpercent, "Percentage of pixels allowed over --fail (default 0)");
+      app.add_option("--hardfail", args->o.thresholds.hardfail, "Fail if any value differs by more than this (default inf)");
+      app.add_option("--warn", args->o.thresholds.warn, "Warning threshold (default 1e-06)");
+      app.add_option("--warnpercent", args->o.thresholds.warnpercent, "Percentage of pixels allowed over --warn (default 0)");
+      app.add_option("--hardwarn", args->o.thresholds.hardwarn, "Warn if any value differs by more than this (default inf)");
+      app.add_option("--allowfailures", args->o.thresholds.allowfailures, "Number of failing pixels that still pass (default 0)");
+      app.add_flag("--linear", args->o.linear, "Decode sRGB-encoded images (PNG) to linear light before comparing");
+      app.add_flag("--ignore-alpha", args->o.ignore_alpha, "Leave the alpha channel out of the comparison");
       app.add_option("--mask", args->mask, "Image whose zero pixels are left out of the comparison");
-      app.add_option("--shift", args->shift, "Tolerate translations up to N pixels (see docs/compare.md)");
-      app.add_option("--ssim", args->ssim, "Fail if SSIM (of luminance) is below T");
-      app.add_option("--flip", args->flip, "Fail if the mean LDR-FLIP error is above T");
-      app.add_flag("--perceptual", args->perceptual, "Report SSIM and FLIP without thresholds");
+      app.add_option("--shift", args->o.shift, "Tolerate translations up to N pixels (see docs/compare.md)");
+      app.add_option("--ssim", args->o.ssim_min, "Fail if SSIM (of luminance) is below T");
+      app.add_option("--flip", args->o.flip_max, "Fail if the mean LDR-FLIP error is above T");
+      app.add_flag("--perceptual", args->o.perceptual, "Report SSIM and FLIP without thresholds");
       app.add_option("--diff-image", args->diff_image, "Write |A-B| * scale to this file");
       app.add_option("--triptych", args->triptych, "Write expected | actual | heat map to this file");
       app.add_option("--scale", args->scale, "Scale of the difference image and heat map (heat map default: 1/max error)");

@@ -6,6 +6,8 @@
 #include <splinefig/compare/report.hpp>
 #include <splinefig/compare/shift.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -118,25 +120,7 @@ std::string text_report(const Comparison& c, const Options& options, const std::
 namespace {
 
 std::string json_string(const std::string& v) {
-  std::string s = "\"";
-  for (unsigned char ch : v) {
-    switch (ch) {
-      case '"': s += "\\\""; break;
-      case '\\': s += "\\\\"; break;
-      case '\n': s += "\\n"; break;
-      case '\t': s += "\\t"; break;
-      case '\r': s += "\\r"; break;
-      default:
-        if (ch < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", ch);
-          s += buf;
-        } else {
-          s += char(ch);
-        }
-    }
-  }
-  return s + "\"";
+  return nlohmann::json(v).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string json_number(double v) {

@@ -2,6 +2,8 @@
 #include <splinefig/figures/catalog.hpp>
 #include <splinefig/image/atomic_file.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -54,35 +56,6 @@ double spec_order(const fs::path& p) {
   return 1e9;
 }
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += static_cast<char>(c);
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string json_number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest form that reads back the same
-  return std::string(buf, r.ptr);
-}
-
 const char* scale_name(Scale s) { return s == Scale::Log ? "log" : s == Scale::Decibel ? "db" : "linear"; }
 
 std::string html_escape(const std::string& s) {
@@ -116,228 +89,93 @@ std::vector<SpecFile> list_specs(const std::string& dir) {
   return out;
 }
 
-std::string index_json(const std::vector<FigureInfo>& figures) {
-  std::ostringstream o;
-  auto arr = [&](auto begin, auto end) {
-    o << "[";
-    for (auto it = begin; it != end; ++it) o << (it == begin ? "" : ", ") << json_number(*it);
-    o << "]";
-  };
-  o << "{\n  \"figures\": [";
-  for (size_t i = 0; i < figures.size(); ++i) {
-    const FigureInfo& f = figures[i];
-    o << (i ? "," : "") << "\n    {\n";
-    o << "      \"name\": " << json_string(f.name) << ",\n";
-    o << "      \"title\": " << json_string(f.title) << ",\n";
-    o << "      \"caption\": " << json_string(f.caption) << ",\n";
-    o << "      \"files\": [";
-    for (size_t k = 0; k < f.files.size(); ++k) o << (k ? ", " : "") << json_string(f.files[k]);
-    o << "],\n";
-    o << "      \"width\": " << f.width << ",\n      \"height\": " << f.height << ",\n";
-    o << "      \"axes\": [";
-    for (size_t a = 0; a < f.axes.size(); ++a) {
-      const AxesInfo& ax = f.axes[a];
-      o << (a ? "," : "") << "\n        {\"pixel_box\": ";
-      arr(ax.pixel_box.begin(), ax.pixel_box.end());
-      o << ", \"x_range\": ";
-      arr(ax.x_range.begin(), ax.x_range.end());
-      o << ", \"y_range\": ";
-      arr(ax.y_range.begin(), ax.y_range.end());
-      o << ", \"x_scale\": \"" << scale_name(ax.x_scale) << "\", \"y_scale\": \"" << scale_name(ax.y_scale) << "\",\n";
-      o << "         \"series\": [";
-      for (size_t s = 0; s < ax.series.size(); ++s) {
-        const SeriesInfo& si = ax.series[s];
-        o << (s ? ", " : "") << "{\"label\": " << json_string(si.label) << ", \"color\": " << json_string(si.color)
-          << ", \"kind\": " << json_string(si.kind) << "}";
-      }
-      o << "]}";
-    }
-    o << (f.axes.empty() ? "]\n" : "\n      ]\n") << "    }";
-  }
-  o << "\n  ]\n}\n";
-  return o.str();
-}
-
 namespace {
 
-// A JSON value: just what index.json holds.
-struct JsonValue {
-  enum class Type { Null, Bool, Number, String, Array, Object } type = Type::Null;
-  double number = 0;
-  std::string string;
-  std::vector<JsonValue> array;
-  std::vector<std::pair<std::string, JsonValue>> object;
-};
+using Json = nlohmann::ordered_json;
 
-class JsonReader {
- public:
-  explicit JsonReader(const std::string& text) : s_(text) {}
-  JsonValue document() {
-    JsonValue v = value(0);
-    space();
-    if (i_ != s_.size()) fail("text after the end");
-    return v;
-  }
-
- private:
-  [[noreturn]] void fail(const std::string& what) const {
-    throw std::runtime_error("index.json: " + what + " at byte " + std::to_string(i_));
-  }
-  void space() {
-    while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\r' || s_[i_] == '\t')) ++i_;
-  }
-  bool take(char c) {
-    space();
-    if (i_ < s_.size() && s_[i_] == c) return ++i_, true;
-    return false;
-  }
-  std::string text() {
-    if (!take('"')) fail("expected a string");
-    std::string out;
-    while (true) {
-      if (i_ >= s_.size()) fail("unterminated string");
-      char c = s_[i_++];
-      if (c == '"') return out;
-      if (c != '\\') {
-        out += c;
-        continue;
-      }
-      if (i_ >= s_.size()) fail("unterminated string");
-      char e = s_[i_++];
-      switch (e) {
-        case 'n': out += '\n'; break;
-        case 't': out += '\t'; break;
-        case 'r': out += '\r'; break;
-        case 'b': out += '\b'; break;
-        case 'f': out += '\f'; break;
-        case 'u': {
-          if (i_ + 4 > s_.size()) fail("bad \\u escape");
-          unsigned code = 0;
-          auto r = std::from_chars(s_.data() + i_, s_.data() + i_ + 4, code, 16);
-          if (r.ptr != s_.data() + i_ + 4 || code >= 0x80) fail("unsupported \\u escape");
-          out += static_cast<char>(code);
-          i_ += 4;
-          break;
-        }
-        default: out += e;
-      }
-    }
-  }
-  JsonValue value(int depth) {
-    if (depth > 16) fail("nested too deeply");
-    space();
-    if (i_ >= s_.size()) fail("unexpected end");
-    JsonValue v;
-    const char c = s_[i_];
-    if (c == '{') {
-      ++i_;
-      v.type = JsonValue::Type::Object;
-      if (take('}')) return v;
-      do {
-        std::string key = text();
-        if (!take(':')) fail("expected ':'");
-        v.object.emplace_back(std::move(key), value(depth + 1));
-      } while (take(','));
-      if (!take('}')) fail("expected '}'");
-    } else if (c == '[') {
-      ++i_;
-      v.type = JsonValue::Type::Array;
-      if (take(']')) return v;
-      do v.array.push_back(value(depth + 1));
-      while (take(','));
-      if (!take(']')) fail("expected ']'");
-    } else if (c == '"') {
-      v.type = JsonValue::Type::String;
-      v.string = text();
-    } else if (s_.compare(i_, 4, "null") == 0) {
-      i_ += 4;
-    } else if (s_.compare(i_, 4, "true") == 0 || s_.compare(i_, 5, "false") == 0) {
-      v.type = JsonValue::Type::Bool;
-      i_ += s_[i_] == 't' ? 4 : 5;
-    } else {
-      v.type = JsonValue::Type::Number;
-      auto r = std::from_chars(s_.data() + i_, s_.data() + s_.size(), v.number);
-      if (r.ec != std::errc()) fail("expected a value");
-      i_ = static_cast<size_t>(r.ptr - s_.data());
-    }
-    return v;
-  }
-  const std::string& s_;
-  size_t i_ = 0;
-};
-
-const JsonValue& member(const JsonValue& v, const std::string& key) {
-  if (v.type != JsonValue::Type::Object) throw std::runtime_error("index.json: expected an object holding \"" + key + "\"");
-  for (const auto& [k, m] : v.object)
-    if (k == key) return m;
-  throw std::runtime_error("index.json: missing \"" + key + "\"");
+Scale scale_of(const Json& v, const char* key) {
+  const std::string s = v.at(key).get<std::string>();
+  if (s == "linear") return Scale::Linear;
+  if (s == "log") return Scale::Log;
+  if (s == "db") return Scale::Decibel;
+  throw std::runtime_error(std::string("\"") + key + "\" is \"" + s + "\", not linear, log or db");
 }
 
-const std::vector<JsonValue>& array_of(const JsonValue& v, const std::string& key) {
-  const JsonValue& a = member(v, key);
-  if (a.type != JsonValue::Type::Array) throw std::runtime_error("index.json: \"" + key + "\" is not an array");
-  return a.array;
-}
-
-std::string string_of(const JsonValue& v, const std::string& key) {
-  const JsonValue& s = member(v, key);
-  if (s.type != JsonValue::Type::String) throw std::runtime_error("index.json: \"" + key + "\" is not a string");
-  return s.string;
-}
-
-double number_of(const JsonValue& v) {
-  if (v.type == JsonValue::Type::Null) return std::numeric_limits<double>::quiet_NaN();  // json_number's non-finite
-  if (v.type != JsonValue::Type::Number) throw std::runtime_error("index.json: expected a number");
-  return v.number;
+// A number as index.json holds it: null for a value that is not finite.
+double number_of(const Json& v) {
+  return v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
 }
 
 template <size_t N>
-std::array<double, N> numbers_of(const JsonValue& v, const std::string& key) {
-  const auto& a = array_of(v, key);
-  if (a.size() != N) throw std::runtime_error("index.json: \"" + key + "\" needs " + std::to_string(N) + " numbers");
+std::array<double, N> numbers_of(const Json& v, const char* key) {
+  const Json& a = v.at(key);
+  if (!a.is_array() || a.size() != N)
+    throw std::runtime_error(std::string("\"") + key + "\" needs " + std::to_string(N) + " numbers");
   std::array<double, N> out{};
   for (size_t i = 0; i < N; ++i) out[i] = number_of(a[i]);
   return out;
 }
 
-Scale scale_of(const JsonValue& v, const std::string& key) {
-  const std::string s = string_of(v, key);
-  if (s == "linear") return Scale::Linear;
-  if (s == "log") return Scale::Log;
-  if (s == "db") return Scale::Decibel;
-  throw std::runtime_error("index.json: \"" + key + "\" is \"" + s + "\", not linear, log or db");
-}
-
 }  // namespace
 
-std::vector<FigureInfo> read_index_json(const std::string& text) {
-  const JsonValue doc = JsonReader(text).document();
-  std::vector<FigureInfo> figures;
-  for (const JsonValue& f : array_of(doc, "figures")) {
-    FigureInfo info;
-    info.name = string_of(f, "name");
-    info.title = string_of(f, "title");
-    info.caption = string_of(f, "caption");
-    for (const JsonValue& file : array_of(f, "files")) {
-      if (file.type != JsonValue::Type::String) throw std::runtime_error("index.json: \"files\" holds a non-string");
-      info.files.push_back(file.string);
+std::string index_json(const std::vector<FigureInfo>& figures) {
+  Json list = Json::array();
+  for (const FigureInfo& f : figures) {
+    Json axes = Json::array();
+    for (const AxesInfo& ax : f.axes) {
+      Json series = Json::array();
+      for (const SeriesInfo& si : ax.series) series.push_back({{"label", si.label}, {"color", si.color}, {"kind", si.kind}});
+      axes.push_back({{"pixel_box", ax.pixel_box},
+                      {"x_range", ax.x_range},
+                      {"y_range", ax.y_range},
+                      {"x_scale", scale_name(ax.x_scale)},
+                      {"y_scale", scale_name(ax.y_scale)},
+                      {"series", std::move(series)}});
     }
-    info.width = static_cast<int>(number_of(member(f, "width")));
-    info.height = static_cast<int>(number_of(member(f, "height")));
-    for (const JsonValue& a : array_of(f, "axes")) {
-      AxesInfo ax;
-      ax.pixel_box = numbers_of<4>(a, "pixel_box");
-      ax.x_range = numbers_of<2>(a, "x_range");
-      ax.y_range = numbers_of<2>(a, "y_range");
-      ax.x_scale = scale_of(a, "x_scale");
-      ax.y_scale = scale_of(a, "y_scale");
-      for (const JsonValue& s : array_of(a, "series"))
-        ax.series.push_back({string_of(s, "label"), string_of(s, "color"), string_of(s, "kind")});
-      info.axes.push_back(std::move(ax));
-    }
-    figures.push_back(std::move(info));
+    list.push_back({{"name", f.name},
+                    {"title", f.title},
+                    {"caption", f.caption},
+                    {"files", f.files},
+                    {"width", f.width},
+                    {"height", f.height},
+                    {"axes", std::move(axes)}});
   }
-  return figures;
+  // Non-finite numbers become null; text that is not UTF-8 is kept readable (U+FFFD).
+  return Json{{"figures", std::move(list)}}.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+std::vector<FigureInfo> read_index_json(const std::string& text) {
+  try {
+    const Json doc = Json::parse(text);
+    std::vector<FigureInfo> figures;
+    for (const Json& f : doc.at("figures")) {
+      FigureInfo info;
+      info.name = f.at("name").get<std::string>();
+      info.title = f.at("title").get<std::string>();
+      info.caption = f.at("caption").get<std::string>();
+      info.files = f.at("files").get<std::vector<std::string>>();
+      info.width = f.at("width").get<int>();
+      info.height = f.at("height").get<int>();
+      for (const Json& a : f.at("axes")) {
+        AxesInfo ax;
+        ax.pixel_box = numbers_of<4>(a, "pixel_box");
+        ax.x_range = numbers_of<2>(a, "x_range");
+        ax.y_range = numbers_of<2>(a, "y_range");
+        ax.x_scale = scale_of(a, "x_scale");
+        ax.y_scale = scale_of(a, "y_scale");
+        for (const Json& s : a.at("series"))
+          ax.series.push_back(
+              {s.at("label").get<std::string>(), s.at("color").get<std::string>(), s.at("kind").get<std::string>()});
+        info.axes.push_back(std::move(ax));
+      }
+      figures.push_back(std::move(info));
+    }
+    return figures;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(std::string("index.json: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("index.json: ") + e.what());
+  }
 }
 
 std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, const std::vector<FigureInfo>& rendered,
