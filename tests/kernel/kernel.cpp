@@ -61,18 +61,26 @@ TEST_CASE("a piecewise kernel picks its piece by exact comparison at every knot"
   CHECK(h(0.5) == 3);
 }
 
-TEST_CASE("basis kernels equal the spline core's basis functions bit for bit") {
+TEST_CASE("basis kernels are the matrix columns of the kernel convention, bit for bit") {
+  // k(s) = c_col(s - (h - col)) with col = h - floor(s), h = (n-1)/2, c_i(u) = [u^n .. 1] M column i
+  // (basis_segment): the memo's convention, evaluated column by column.
   for (const char* spec : {"catmull-rom", "bspline", "cardinal:a=0.25", "tensioned-bspline:a=0.5", "beta:b1=2,b2=1",
                            "uniform-bspline:degree=2", "uniform-bspline:degree=5", "mitchell-netravali"}) {
     INFO(spec);
     const Basis b = parse_basis(spec);
     const Kernel k = parse_kernel(spec);
+    const int n = b.degree, h = (n - 1) / 2;
     CHECK(k.name() == b.spec);
-    CHECK(k.support().lo == kernel_support(b).lo);
-    CHECK(k.support().hi == kernel_support(b).hi);
-    CHECK(k.degree() == b.degree);
-    for (double s = -4; s <= 4; s += 1.0 / 64) CHECK(k(s) == kernel(b, s));
-    for (double s : {-1.0, 0.0, 1.0}) CHECK(k(below(s)) == kernel(b, below(s)));
+    CHECK(k.support().lo == h - n);
+    CHECK(k.support().hi == h + 1);
+    CHECK(k.degree() == n);
+    for (double s = h - n; s < h + 1; s += 1.0 / 64) {
+      const int col = h - static_cast<int>(std::floor(s));
+      INFO("s = " << s);
+      CHECK(k(s) == basis_segment(b, col, s - (h - col)));
+    }
+    CHECK(k(h - n - 1.0 / 64) == 0);
+    CHECK(k(h + 1) == 0);
   }
 }
 
