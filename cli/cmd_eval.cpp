@@ -174,9 +174,7 @@ int run(const Options& o) {
 const splinefig::cli::Registration reg{
     "eval", "Evaluate a spline through knots read on stdin (CSV), points on stdout", [](CLI::App& app) {
       auto o = std::make_shared<Options>();
-      app.add_option("--basis", o->basis,
-                     "Basis spec NAME[:key=value,...]: catmull-rom, cardinal:a=A, bspline, "
-                     "tensioned-bspline:a=A, beta:b1=B1,b2=B2, uniform-bspline:degree=N")
+      app.add_option("--basis", o->basis, std::string("Basis spec NAME[:key=value,...]: ") + cli::basis_specs)
           ->required();
       app.add_option("--grain", o->grain, "Points per piece (default 16)");
       app.add_option("--ends", o->ends,

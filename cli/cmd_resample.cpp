@@ -108,8 +108,7 @@ const splinefig::cli::Registration reg{
       app.add_option("--size", o->size, "Output size WxH");
       app.add_option("--scale", o->scale, "Scale factor S or SX,SY (output size rounded)");
       app.add_option("--filter", o->filter,
-                     "Basis spec (catmull-rom, cardinal:a=A, bspline, tensioned-bspline:a=A, "
-                     "beta:b1=B1,b2=B2, uniform-bspline:degree=N) or box, tent, lanczos3")
+                     std::string("Basis spec (") + splinefig::cli::basis_specs + ") or box, tent, lanczos3")
           ->required();
       app.add_option("--edge", o->edge, "Samples outside the image: clamp (default), mirror, wrap, black");
       app.add_flag("--interpolating", o->interpolating,

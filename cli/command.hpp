@@ -37,6 +37,11 @@ struct Failure : std::runtime_error {
   explicit Failure(const std::string& what, int code = 2) : std::runtime_error(what), code(code) {}
 };
 
+// The basis specs every command that takes one accepts (spline/basis.hpp), for --help.
+inline constexpr const char* basis_specs =
+    "catmull-rom, cardinal:a=A, bspline, tensioned-bspline:a=A, beta:b1=B1,b2=B2, "
+    "uniform-bspline:degree=N, mitchell-netravali:b=B,c=C";
+
 // A spec given to `flag`, read by `parse` (parse_basis, parse_kernel, ...): its SpecError
 // becomes a Failure naming the flag.
 template <class Parse>
