@@ -11,10 +11,13 @@
 // back, so the test compares what the file would hold; against an EXR it is compared as is.
 //
 // On failure the matcher writes <stem>.actual.<ext>, <stem>.diff.png (|a-b| scaled so the
-// largest difference is 1) and <stem>.triptych.png (expected | actual | heat map) to
-// $SPLINEFIG_TEST_RESULTS (default build/test-results/) and its message gives their paths and
-// the numbers. With SPLINEFIG_UPDATE_REFERENCES=1 it writes the image as the new reference
-// instead, says so, and passes: review the change (git diff, the images) before committing.
+// largest difference is 1; for RGBA the colour channels, and <stem>.alpha-diff.png the alpha
+// channel) and <stem>.triptych.png (expected | actual | heat map), where <stem> is
+// <results>/<test name>/<reference path without extension>, <results> being
+// $SPLINEFIG_TEST_RESULTS or else test-results/ in the test's build directory (absolute). Its
+// message gives their paths and the numbers. With SPLINEFIG_UPDATE_REFERENCES=1 it writes the
+// image as the new reference instead, says so, and passes: review the change (git diff, the
+// images) before committing.
 //
 // Header-only on purpose: only test code includes it, and it needs Catch2's headers (the
 // splinefig::testing CMake target brings them and splinefig::compare). The same matcher for
@@ -34,7 +37,7 @@ class ReferenceMatcher : public Catch::MatcherBase<Image> {
       : m_reference(std::move(reference)), m_tolerance(tolerance) {}
 
   bool match(const Image& actual) const override {
-    Outcome o = match_reference(actual, m_reference, m_tolerance);
+    Outcome o = match_reference(actual, m_reference, m_tolerance, Catch::getResultCapture().getCurrentTestName());
     m_message = std::move(o.message);
     return o.ok;
   }

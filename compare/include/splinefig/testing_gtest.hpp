@@ -31,7 +31,9 @@ class ReferenceMatcher : public ::testing::MatcherInterface<const Image&> {
       : m_reference(std::move(reference)), m_tolerance(tolerance) {}
 
   bool MatchAndExplain(const Image& actual, ::testing::MatchResultListener* listener) const override {
-    const Outcome o = match_reference(actual, m_reference, m_tolerance);
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string name = test ? std::string(test->test_suite_name()) + "." + test->name() : std::string();
+    const Outcome o = match_reference(actual, m_reference, m_tolerance, name);
     *listener << o.message;
     return o.ok;
   }

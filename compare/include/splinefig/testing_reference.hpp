@@ -31,9 +31,20 @@ struct Tolerance {
   std::optional<double> flip_max;
 };
 
+// Where a failed match writes its artefacts: $SPLINEFIG_TEST_RESULTS, else test-results/ in the
+// build directory of the test program (SPLINEFIG_TEST_RESULTS_DIR, which the splinefig::testing
+// targets define), else test-results/ in the current directory; always absolute.
 inline std::string results_directory() {
+  namespace fs = std::filesystem;
   const char* env = std::getenv("SPLINEFIG_TEST_RESULTS");
-  return env && *env ? std::string(env) : std::string("build/test-results");
+#ifdef SPLINEFIG_TEST_RESULTS_DIR
+  const fs::path dir = env && *env ? fs::path(env) : fs::path(SPLINEFIG_TEST_RESULTS_DIR);
+#else
+  const fs::path dir = env && *env ? fs::path(env) : fs::path("test-results");
+#endif
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(dir, ec);
+  return (ec ? dir : absolute).lexically_normal().string();
 }
 
 inline bool updating_references() {
@@ -64,6 +75,32 @@ inline Image as_stored(const Image& im, const std::string& reference, bool linea
   return back;
 }
 
+// The artefacts' path without suffix: <results>/<test name>/<reference path>, the reference path
+// relative to the current directory when it is inside it (else absolute), without its extension,
+// so that references of the same name in different folders, or one reference checked by several
+// tests, keep apart. Characters other than letters, digits and ._- become '_'.
+inline std::string artefact_stem(const std::string& results, const std::string& test_name, const std::string& reference) {
+  namespace fs = std::filesystem;
+  auto clean = [](std::string s) {
+    for (auto& ch : s)
+      if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '_' && ch != '-') ch = '_';
+    return s == "." || s == ".." || s.empty() ? "_" + s : s;
+  };
+  std::error_code ec;
+  fs::path ref = fs::absolute(fs::path(reference), ec).lexically_normal();
+  const fs::path cwd = fs::current_path(ec);
+  if (!ec) {
+    const fs::path rel = ref.lexically_relative(cwd);
+    if (!rel.empty() && *rel.begin() != "..") ref = rel;
+  }
+  fs::path out = fs::path(results);
+  if (!test_name.empty()) out /= clean(test_name);
+  const fs::path parent = ref.parent_path();
+  for (const auto& part : parent.relative_path()) out /= clean(part.string());
+  out /= clean(ref.stem().string());
+  return out.string();
+}
+
 }  // namespace detail
 
 // What match_reference() found: whether the image matches and the message to show.
@@ -73,8 +110,10 @@ struct Outcome {
 };
 
 // Compares `actual` with the reference file (or, with SPLINEFIG_UPDATE_REFERENCES=1, writes it
-// as the new reference) and says what happened; on a failure the artefacts are written first.
-inline Outcome match_reference(const Image& actual, const std::string& reference, const Tolerance& tolerance) {
+// as the new reference) and says what happened; on a failure the artefacts are written first,
+// named after `test_name` (the running test's, may be empty) and the reference's path.
+inline Outcome match_reference(const Image& actual, const std::string& reference, const Tolerance& tolerance,
+                               const std::string& test_name = {}) {
   namespace fs = std::filesystem;
   if (updating_references()) {
     fs::create_directories(fs::path(reference).parent_path().empty() ? fs::path(".") : fs::path(reference).parent_path());
@@ -83,9 +122,9 @@ inline Outcome match_reference(const Image& actual, const std::string& reference
     std::cerr << message << "\n";
     return {true, message};
   }
-  const std::string dir = results_directory();
   const fs::path ref(reference);
-  const std::string stem = (fs::path(dir) / ref.stem()).string();
+  const std::string stem = detail::artefact_stem(results_directory(), test_name, reference);
+  const fs::path dir = fs::path(stem).parent_path();
   const std::string ext = ref.extension().string();
   Image expected;
   try {
@@ -120,10 +159,13 @@ inline Outcome match_reference(const Image& actual, const std::string& reference
   write_image(stem + ".actual" + ext, actual);
   write_image(stem + ".diff.png", compare::difference_image(c.pa, c.pb, scale));
   write_image(stem + ".triptych.png", compare::triptych(c.pa, c.pb, scale));
+  const bool alpha = c.pa.alpha_channel >= 0 && c.pb.alpha_channel >= 0;
+  if (alpha) write_image(stem + ".alpha-diff.png", compare::alpha_difference_image(c.pa, c.pb, scale));
   const std::string message = "matches reference " + reference + "\n" +
               compare::text_report(c, o, reference, "actual", true) +
               "  actual:   " + stem + ".actual" + ext + "\n" +
-              "  diff:     " + stem + ".diff.png (x" + std::to_string(scale) + ")\n" +
+              "  diff:     " + stem + ".diff.png (x" + std::to_string(scale) + (alpha ? ", colour" : "") + ")\n" +
+              (alpha ? "  alpha:    " + stem + ".alpha-diff.png (x" + std::to_string(scale) + ")\n" : std::string()) +
               "  triptych: " + stem + ".triptych.png (expected | actual | difference)\n" +
               "  if the change is intended: SPLINEFIG_UPDATE_REFERENCES=1 and review the new reference";
   return {false, message};
