@@ -1,5 +1,6 @@
 #pragma once
-// Catch2 (v2) support for image tests: compare a rendered image with a reference file.
+// Catch2 support for image tests (v2, and v3 where its headers are present): compare a
+// rendered image with a reference file.
 //
 //   #include <splinefig/testing.hpp>
 //   using splinefig::testing::MatchesReference;
@@ -24,14 +25,24 @@
 // GoogleTest/GoogleMock is in splinefig/testing_gtest.hpp.
 #include <splinefig/testing_reference.hpp>
 
+// Catch2 v3's headers where they are present, else Catch2 v2's single header (Debian 12's).
+#if __has_include(<catch2/catch_test_macros.hpp>)
+#include <catch2/catch_test_macros.hpp>
+#include <catch2/catch_tostring.hpp>
+#include <catch2/interfaces/catch_interfaces_capture.hpp>
+#include <catch2/matchers/catch_matchers.hpp>
+#define SPLINEFIG_CATCH_MATCHER_BASE Catch::Matchers::MatcherBase
+#else
 #include <catch2/catch.hpp>
+#define SPLINEFIG_CATCH_MATCHER_BASE Catch::MatcherBase
+#endif
 
 #include <iostream>
 #include <string>
 
 namespace splinefig::testing {
 
-class ReferenceMatcher : public Catch::MatcherBase<Image> {
+class ReferenceMatcher : public SPLINEFIG_CATCH_MATCHER_BASE<Image> {
  public:
   ReferenceMatcher(std::string reference, Tolerance tolerance)
       : m_reference(std::move(reference)), m_tolerance(tolerance) {}
