@@ -27,8 +27,8 @@ struct Tolerance {
   int shift = 0;
   bool linear = false;        // compare in linear light
   bool ignore_alpha = false;
-  std::optional<double> ssim_min;
-  std::optional<double> flip_max;
+  std::optional<double> ssim_min{};
+  std::optional<double> flip_max{};
 };
 
 // Where a failed match writes its artefacts: $SPLINEFIG_TEST_RESULTS, else test-results/ in the
