@@ -8,10 +8,35 @@
 namespace splinefig::compare {
 
 Image difference_image(const Image& a, const Image& b, float scale) {
-  Image d = a;
-  d.encoding = Encoding::srgb;
-  d.alpha_channel = -1;
-  for (std::size_t k = 0; k < d.pixels.size(); ++k) d.pixels[k] = std::fabs(a.pixels[k] - b.pixels[k]) * scale;
+  if (a.alpha_channel < 0) {
+    Image d = a;
+    d.encoding = Encoding::srgb;
+    for (std::size_t k = 0; k < d.pixels.size(); ++k) d.pixels[k] = std::fabs(a.pixels[k] - b.pixels[k]) * scale;
+    return d;
+  }
+  // With an alpha channel the difference of the (associated) colour channels only: stored as
+  // alpha, a difference that is 0 wherever the coverage agrees would hide every colour
+  // difference. alpha_difference_image() shows the alpha channel's.
+  int colour[3] = {-1, -1, -1}, n = 0;
+  for (int c = 0; c < a.channels && n < 3; ++c)
+    if (c != a.alpha_channel) colour[n++] = c;
+  Image d = Image::zeros(a.width, a.height, std::max(n, 1), Encoding::srgb);
+  d.x = a.x;
+  d.y = a.y;
+  for (int j = 0; j < a.height; ++j)
+    for (int i = 0; i < a.width; ++i)
+      for (int k = 0; k < n; ++k) d.at(i, j, k) = std::fabs(a.at(i, j, colour[k]) - b.at(i, j, colour[k])) * scale;
+  return d;
+}
+
+Image alpha_difference_image(const Image& a, const Image& b, float scale) {
+  Image d = Image::zeros(a.width, a.height, 1, Encoding::srgb);
+  d.x = a.x;
+  d.y = a.y;
+  if (a.alpha_channel < 0 || b.alpha_channel < 0) return d;
+  for (int j = 0; j < a.height; ++j)
+    for (int i = 0; i < a.width; ++i)
+      d.at(i, j, 0) = std::fabs(a.at(i, j, a.alpha_channel) - b.at(i, j, b.alpha_channel)) * scale;
   return d;
 }
 

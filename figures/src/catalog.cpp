@@ -20,17 +20,22 @@ namespace fs = std::filesystem;
 namespace splinefig::figures {
 
 std::string builtin_specs_dir() {
-  std::vector<fs::path> candidates;
   if (const char* env = std::getenv("SPLINEFIG_SPECS_DIR"); env && *env) return env;
-#ifdef SPLINEFIG_SPECS_DIR
-  candidates.emplace_back(SPLINEFIG_SPECS_DIR);
-#endif
+  std::vector<fs::path> candidates;
   std::error_code ec;
-  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) candidates.push_back(exe.parent_path().parent_path() / "share" / "splinefig" / "specs");
-#ifdef SPLINEFIG_INSTALLED_SPECS_DIR
-  candidates.emplace_back(SPLINEFIG_INSTALLED_SPECS_DIR);
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    // An installed (or relocated) tree: bin/splinefig next to share/splinefig/specs.
+    candidates.push_back(exe.parent_path().parent_path() / SPLINEFIG_DATADIR / "splinefig" / "specs");
+#ifdef SPLINEFIG_SOURCE_SPECS_DIR
+    // A program of the build tree uses the specs it was built from; an installed one never
+    // looks at the source tree.
+    const fs::path build = fs::path(SPLINEFIG_BUILD_DIR).lexically_normal();
+    const auto rel = exe.lexically_normal().lexically_relative(build);
+    if (!rel.empty() && *rel.begin() != "..") candidates.emplace_back(SPLINEFIG_SOURCE_SPECS_DIR);
 #endif
+  }
+  candidates.emplace_back(SPLINEFIG_INSTALLED_SPECS_DIR);
   for (const auto& c : candidates)
     if (fs::is_directory(c, ec)) return c.string();
   return {};

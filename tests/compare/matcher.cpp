@@ -43,6 +43,15 @@ std::vector<float> disc_rgba(int w, int h, float red) {
   return px;
 }
 
+// The path the failure message gives after `label` ("actual:", "diff:", ...).
+std::string artefact(const std::string& message, const std::string& label) {
+  const auto at = message.find("  " + label);
+  if (at == std::string::npos) return {};
+  auto begin = message.find_first_not_of(' ', at + 2 + label.size());
+  auto end = message.find_first_of(" \n", begin);
+  return message.substr(begin, end - begin);
+}
+
 struct Env {
   Env(const char* name, const std::string& value) : name(name) { setenv(name, value.c_str(), 1); }
   ~Env() { unsetenv(name); }
@@ -89,11 +98,14 @@ TEST_CASE("MatchesReference: a mismatch writes actual, diff and triptych and rep
   const std::string msg = m.describe();
   CHECK(msg.find("  Mean error = ") != std::string::npos);
   CHECK(msg.find("FAILURE") != std::string::npos);
-  for (const char* f : {"matcher-disc2.actual.png", "matcher-disc2.diff.png", "matcher-disc2.triptych.png"}) {
-    CHECK(fs::exists(fs::path(results) / f));
-    CHECK(msg.find((fs::path(results) / f).string()) != std::string::npos);
+  for (const char* label : {"actual:", "diff:", "alpha:", "triptych:"}) {
+    INFO(label << " in " << msg);
+    const std::string path = artefact(msg, label);
+    CHECK(fs::path(path).is_absolute());
+    CHECK(path.rfind(results + "/", 0) == 0);
+    CHECK(fs::exists(path));
   }
-  const Image trip = read_image((fs::path(results) / "matcher-disc2.triptych.png").string());
+  const Image trip = read_image(artefact(msg, "triptych:"));
   CHECK(trip.width == 3 * 24 + 4);
   // Within a generous tolerance the same pair matches.
   CHECK_THAT(linear_rgba(24, 20, other.data()), MatchesReference(ref, {.fail = 0.5f}));
@@ -140,4 +152,65 @@ TEST_CASE("MatchesReference: only SPLINEFIG_UPDATE_REFERENCES=1 rewrites a refer
     CHECK(fs::last_write_time(ref) == before);
     CHECK(read_image(ref).pixels == kept.pixels);
   }
+}
+
+TEST_CASE("MatchesReference: artefacts of references with the same file name in different folders keep apart") {
+  const std::string results = scratch("matcher-results-apart");
+  fs::remove_all(results);
+  const Env env_results("SPLINEFIG_TEST_RESULTS", results);
+  const std::string ref_a = scratch("apart-a/disc.png"), ref_b = scratch("apart-b/disc.png");
+  const auto px = disc_rgba(24, 20, 0.8f), a = disc_rgba(24, 20, 0.5f), b = disc_rgba(24, 20, 0.1f);
+  {
+    const Env update("SPLINEFIG_UPDATE_REFERENCES", "1");
+    CHECK(MatchesReference(ref_a).match(linear_rgba(24, 20, px.data())));
+    CHECK(MatchesReference(ref_b).match(linear_rgba(24, 20, px.data())));
+  }
+  auto ma = MatchesReference(ref_a);
+  auto mb = MatchesReference(ref_b);
+  CHECK_FALSE(ma.match(linear_rgba(24, 20, a.data())));
+  CHECK_FALSE(mb.match(linear_rgba(24, 20, b.data())));
+  const std::string actual_a = artefact(ma.describe(), "actual:"), actual_b = artefact(mb.describe(), "actual:");
+  CHECK(actual_a != actual_b);
+  // Each actual image is the one its own check saw (red 0.5 and 0.1 at the centre).
+  CHECK(read_image(actual_a, ReadMode::linear).at(12, 10, 0) == Approx(0.5).margin(0.01));
+  CHECK(read_image(actual_b, ReadMode::linear).at(12, 10, 0) == Approx(0.1).margin(0.01));
+  // The test's name is part of the path, so two tests checking one reference keep apart too.
+  CHECK(actual_a.find("MatchesReference__artefacts_of_references") != std::string::npos);
+}
+
+TEST_CASE("MatchesReference: without SPLINEFIG_TEST_RESULTS artefacts go to an absolute directory") {
+  const char* was = std::getenv("SPLINEFIG_TEST_RESULTS");
+  const std::string saved = was ? was : "";
+  unsetenv("SPLINEFIG_TEST_RESULTS");
+  const std::string dir = splinefig::testing::results_directory();
+  if (!saved.empty()) setenv("SPLINEFIG_TEST_RESULTS", saved.c_str(), 1);
+  CHECK(fs::path(dir).is_absolute());
+  // splinefig::testing points it at test-results/ in the build directory of this test program.
+  CHECK(dir == (fs::path(SPLINEFIG_BINARY_DIR) / "tests" / "test-results").lexically_normal().string());
+}
+
+TEST_CASE("MatchesReference: the diff image of an RGBA render shows the colour difference") {
+  // Two discs of the same coverage and different red: the alpha channels agree, so a diff
+  // stored with |alpha difference| as its alpha would be invisible (all 0 when read back).
+  const std::string results = scratch("matcher-results-rgba");
+  fs::remove_all(results);
+  const Env env_results("SPLINEFIG_TEST_RESULTS", results);
+  const std::string ref = scratch("matcher-rgba.png");
+  const auto px = disc_rgba(24, 20, 0.8f), other = disc_rgba(24, 20, 0.3f);
+  {
+    const Env update("SPLINEFIG_UPDATE_REFERENCES", "1");
+    CHECK(MatchesReference(ref).match(linear_rgba(24, 20, px.data())));
+  }
+  auto m = MatchesReference(ref);
+  CHECK_FALSE(m.match(linear_rgba(24, 20, other.data())));
+  const Image diff = read_image(artefact(m.describe(), "diff:"));
+  REQUIRE(diff.width == 24);
+  // The largest difference, red at the disc's centre, is scaled to 1; green and blue agree.
+  CHECK(diff.at(12, 10, 0) == Approx(1.0).margin(1e-6));
+  CHECK(diff.at(12, 10, 1) == 0.0f);
+  CHECK(diff.at(0, 0, 0) == 0.0f);  // transparent in both
+  const Image alpha = read_image(artefact(m.describe(), "alpha:"));
+  float most = 0.0f;
+  for (float v : alpha.pixels) most = std::max(most, v);
+  CHECK(most == 0.0f);  // same coverage
 }

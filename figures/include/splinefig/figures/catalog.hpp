@@ -8,9 +8,10 @@
 
 namespace splinefig::figures {
 
-// The directory of the built-in specs: $SPLINEFIG_SPECS_DIR if set, else the source tree's
-// figures/specs when it exists, else share/splinefig/specs next to the executable
-// (../share/splinefig/specs), else the install prefix's. Empty if none exists.
+// The directory of the built-in specs: $SPLINEFIG_SPECS_DIR if set, else share/splinefig/specs
+// next to the executable (../share/splinefig/specs: an installed or relocated tree), else for a
+// program of the build tree the source tree's figures/specs, else the install prefix's. Empty if
+// none exists.
 std::string builtin_specs_dir();
 
 // Spec files of a directory (*.toml), sorted by their `order` key then by name.

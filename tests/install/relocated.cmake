@@ -1,0 +1,53 @@
+# Installs the built tree into a scratch prefix, moves the prefix elsewhere, keeps only one of
+# its built-in specs, and runs the moved `splinefig figures` without SPLINEFIG_SPECS_DIR: it
+# must draw exactly the moved prefix's one spec, so it found share/splinefig/specs next to its
+# own bin/ and neither the source tree (33 specs) nor the original prefix.
+file(REMOVE_RECURSE ${WORK_DIR})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix
+  RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+  message(FATAL_ERROR "cmake --install failed: ${rc}")
+endif()
+# Moved out of the build tree too: a program of the build tree may use the source tree's specs.
+string(RANDOM LENGTH 8 tag)
+set(MOVED ${TMP_DIR}/splinefig-relocated-${tag})
+file(REMOVE_RECURSE ${MOVED})
+file(RENAME ${WORK_DIR}/prefix ${MOVED})
+set(specs ${MOVED}/share/splinefig/specs)
+file(GLOB installed RELATIVE ${specs} ${specs}/*.toml)
+list(LENGTH installed count)
+if(count LESS 2)
+  message(FATAL_ERROR "the install holds ${count} built-in specs in ${specs}")
+endif()
+foreach(spec ${installed})
+  if(NOT spec STREQUAL "cbasis.toml")
+    file(REMOVE ${specs}/${spec})
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=SPLINEFIG_SPECS_DIR
+    ${MOVED}/bin/splinefig figures --out ${WORK_DIR}/out
+  WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "the moved splinefig figures failed: ${rc}\n${out}${err}")
+endif()
+file(GLOB drawn RELATIVE ${WORK_DIR}/out ${WORK_DIR}/out/*.png)
+if(NOT drawn STREQUAL "cbasis.png")
+  file(REMOVE_RECURSE ${MOVED})
+  message(FATAL_ERROR "the moved splinefig figures drew [${drawn}], not the moved prefix's one spec [cbasis.png]\n${out}${err}")
+endif()
+message(STATUS "the moved install drew ${drawn} from ${specs}")
+# Without its specs it says so and draws nothing, rather than reading the source tree's (unless
+# something is installed at the configured prefix, its last resort).
+file(REMOVE_RECURSE ${specs})
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=SPLINEFIG_SPECS_DIR
+    ${MOVED}/bin/splinefig figures --out ${WORK_DIR}/out2
+  WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(REMOVE_RECURSE ${MOVED})
+if(NOT EXISTS ${INSTALLED_SPECS_DIR})
+  if(NOT rc OR NOT err MATCHES "cannot find the built-in figure specs")
+    message(FATAL_ERROR "without its specs the moved splinefig figures exited ${rc}: ${out}${err}")
+  endif()
+  if(EXISTS ${WORK_DIR}/out2/cbasis.png)
+    message(FATAL_ERROR "without its specs the moved splinefig figures still drew figures")
+  endif()
+endif()
