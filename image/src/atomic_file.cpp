@@ -8,9 +8,11 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 
 #include <dirent.h>
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -33,10 +35,48 @@ Slot g_slots[kSlots];
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 struct sigaction g_previous[3];
 
+// Creating a temporary file and registering it is one step as far as the handler can see: a
+// writer does both holding g_lock with the signals blocked in its own thread, and the handler
+// (running on another thread) takes g_lock before it removes the registered files and sets
+// g_dying first, so no writer creates a file after the handler has looked. The lock is held
+// only for an openat and a copy of the name; spinning on it is async-signal-safe.
+std::atomic_flag g_lock = ATOMIC_FLAG_INIT;
+std::atomic<bool> g_dying{false};
+
+void lock() {
+  while (g_lock.test_and_set(std::memory_order_acquire)) {
+  }
+}
+void unlock() { g_lock.clear(std::memory_order_release); }
+
+// Blocks the cleanup signals in this thread for its lifetime, and holds g_lock.
+class Critical {
+ public:
+  Critical() {
+    sigset_t set;
+    sigemptyset(&set);
+    for (int sig : kSignals) sigaddset(&set, sig);
+    ::pthread_sigmask(SIG_BLOCK, &set, &old_);
+    lock();
+  }
+  ~Critical() {
+    unlock();
+    ::pthread_sigmask(SIG_SETMASK, &old_, nullptr);
+  }
+  Critical(const Critical&) = delete;
+  Critical& operator=(const Critical&) = delete;
+
+ private:
+  sigset_t old_;
+};
+
 extern "C" void remove_temporaries_and_reraise(int sig) {
   const int saved = errno;
+  g_dying.store(true, std::memory_order_seq_cst);
+  lock();
   for (Slot& s : g_slots)
     if (s.state.load(std::memory_order_acquire) == 2) ::unlinkat(s.dirfd, s.name, 0);
+  unlock();
   for (int i = 0; i < 3; ++i)
     if (kSignals[i] == sig) ::sigaction(sig, &g_previous[i], nullptr);
   errno = saved;
@@ -53,14 +93,16 @@ void install_handlers() {
       g_previous[i] = current;
       struct sigaction sa {};
       sa.sa_handler = remove_temporaries_and_reraise;
-      sigemptyset(&sa.sa_mask);
+      sigemptyset(&sa.sa_mask);  // the other cleanup signals wait while the handler holds g_lock
+      for (int other : kSignals) sigaddset(&sa.sa_mask, other);
       sa.sa_flags = 0;
       ::sigaction(kSignals[i], &sa, nullptr);
     }
   });
 }
 
-// Registers a temporary file with the signal handler; a no-op when all slots are taken.
+// Registers a temporary file with the signal handler (the caller holds a Critical); a no-op
+// when all slots are taken.
 class Registration {
  public:
   Registration(int dirfd, const std::string& name) {
@@ -78,6 +120,7 @@ class Registration {
   }
   ~Registration() {
     if (!slot_) return;
+    const Critical c;
     slot_->state.store(1, std::memory_order_release);
     slot_->dirfd = -1;
     slot_->name[0] = 0;
@@ -157,14 +200,19 @@ void write_file_atomically(const std::string& path, std::span<const unsigned cha
 
   std::string tmp;
   Fd f;
-  for (int attempt = 0; attempt < 100 && f.fd < 0; ++attempt) {
-    tmp = temporary_name(filename, long(::getpid()), counter++);
-    f.fd = ::openat(d.fd, tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (f.fd < 0 && errno != EEXIST) throw UnwritableFile(path + ": cannot create a file there (" + reason(errno) + ")");
+  std::optional<Registration> reg;
+  {
+    const Critical c;  // created and registered before any cleanup signal can look
+    if (g_dying.load()) throw UnwritableFile(path + ": not written, the process is being stopped by a signal");
+    for (int attempt = 0; attempt < 100 && f.fd < 0; ++attempt) {
+      tmp = temporary_name(filename, long(::getpid()), counter++);
+      f.fd = ::openat(d.fd, tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if (f.fd < 0 && errno != EEXIST)
+        throw UnwritableFile(path + ": cannot create a file there (" + reason(errno) + ")");
+    }
+    if (f.fd < 0) throw UnwritableFile(path + ": cannot create a unique temporary file");
+    reg.emplace(d.fd, tmp);
   }
-  if (f.fd < 0) throw UnwritableFile(path + ": cannot create a unique temporary file");
-
-  Registration reg(d.fd, tmp);
   auto fail = [&](const std::string& what, int err) {
     ::close(f.fd);
     f.fd = -1;
