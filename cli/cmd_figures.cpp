@@ -1,6 +1,8 @@
 // `splinefig figures [--out DIR] [--only NAME...] [--format png,exr] [--scale S]`: renders
 // every built-in figure spec (figures/specs), then index.json and the gallery index.html.
 // With --only, the index keeps the entries of the figures that were not rendered again.
+// The index is written only after every image of the run: a figure that fails keeps its
+// previous entry (and its previous images), and a run that renders nothing leaves the index alone.
 #include "command.hpp"
 
 #include <splinefig/figures/batch.hpp>
@@ -121,6 +123,7 @@ int run(const FiguresArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
   std::vector<fig::FigureInfo> done;
+  std::set<std::string> failed_names;
   int failed = 0;
   fig::render_batch(chosen, options, [&](fig::BatchResult& r) {
     if (r.info) {
@@ -129,13 +132,23 @@ int run(const FiguresArgs& a) {
       done.push_back(std::move(*r.info));
     } else {
       ++failed;
+      failed_names.insert(r.name);
       std::cerr << "splinefig figures: " << r.error << "\n";
     }
   });
-  const std::vector<fig::FigureInfo> index =
-      a.only.empty() ? done : fig::merge_index(previous_index(a.out), done, specs, a.out);
-  fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
-  fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index));
+  if (!done.empty()) {
+    std::vector<fig::FigureInfo> index = done;
+    if (!a.only.empty()) {
+      index = fig::merge_index(previous_index(a.out), done, specs, a.out);
+    } else if (failed) {
+      // A whole run drops the entries of specs that are gone, but not those that failed now.
+      std::vector<fig::FigureInfo> kept = previous_index(a.out);
+      std::erase_if(kept, [&](const fig::FigureInfo& f) { return !failed_names.count(f.name); });
+      index = fig::merge_index(kept, done, specs, a.out);
+    }
+    fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
+    fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index));
+  }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   std::printf("%zu figure%s in %.2f s (%.2f s CPU) -> %s/index.html\n", done.size(), done.size() == 1 ? "" : "s", total,
