@@ -51,11 +51,10 @@ std::vector<std::string> split(const std::string& s) {
 // The flags checked and turned into batch options.
 fig::BatchOptions batch_options(const FiguresArgs& a) {
   splinefig::cli::check_output_scale(a.scale);
-  splinefig::cli::check_threads(a.threads);
   fig::BatchOptions o;
   o.out_dir = a.out;
   o.scale = a.scale;
-  o.threads = a.threads;
+  o.threads = splinefig::cli::check_threads(a.threads);
   o.software = std::string("splinefig ") + SPLINEFIG_VERSION;
   o.formats.clear();
   for (const auto& f : split(a.format)) {
@@ -165,7 +164,7 @@ const splinefig::cli::Registration reg{
           ->delimiter(',');
       app.add_option("--format", a->format, "Comma-separated: png, exr (default png)");
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1; 2 for print)");
-      app.add_option("--threads", a->threads, "Rendering threads (default: all cores)");
+      app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
       app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones");
       return splinefig::cli::Runner([a] { return run(*a); });
     }};

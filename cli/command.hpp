@@ -7,6 +7,7 @@
 #include <splinefig/spline/basis.hpp>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -57,8 +58,11 @@ auto parse_spec_flag(const std::string& flag, const std::string& spec, Parse&& p
 inline void check_output_scale(double scale) {
   if (!(scale > 0) || scale > 64) throw Failure("--scale " + std::to_string(scale) + ": must be in (0, 64]");
 }
-inline void check_threads(int threads) {
-  if (threads < 0) throw Failure("--threads: must not be negative");
+// --threads N: 0 is every core; more than max_threads is max_threads (docs/cli.md).
+inline constexpr int max_threads = 256;
+inline int check_threads(int threads) {
+  if (threads < 0) throw Failure("--threads " + std::to_string(threads) + ": must not be negative");
+  return std::min(threads, max_threads);
 }
 
 }  // namespace splinefig::cli
