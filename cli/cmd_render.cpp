@@ -36,6 +36,7 @@ const splinefig::cli::Registration reg{
         const std::string ext = extension_of(a->out);
         if (ext != ".png" && ext != ".exr") throw Failure("-o " + a->out + ": the output must end in .png or .exr");
         if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
+        splinefig::cli::check_input_file(a->spec);
         splinefig::cli::check_output_scale(a->scale);
         const int threads = splinefig::cli::check_threads(a->threads);
         try {

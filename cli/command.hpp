@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -52,6 +53,19 @@ auto parse_spec_flag(const std::string& flag, const std::string& spec, Parse&& p
   } catch (const SpecError& e) {
     throw Failure(flag + ": " + e.what());
   }
+}
+
+// A file the command reads by name (a spec, a CSV): it must be a regular file, so that a
+// directory is not taken for an empty input and a FIFO or device (/dev/zero) cannot hang the
+// command. `what` names it ("-o", "--betas", or empty for a positional argument).
+inline void check_input_file(const std::string& path, const std::string& what = "") {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  const std::string name = (what.empty() ? "" : what + " ") + path;
+  if (ec || !fs::exists(st)) return;  // the reader says it is missing, as it always has
+  if (fs::is_directory(st)) throw Failure(name + ": is a directory, not a file");
+  if (!fs::is_regular_file(st)) throw Failure(name + ": not a regular file (a FIFO, socket or device)");
 }
 
 // The flags shared by the commands that render figures.

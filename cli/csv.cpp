@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <limits>
 
 namespace splinefig::cli {
@@ -54,6 +55,28 @@ bool to_double(std::string_view text, double& v, std::string& why) {
   return true;
 }
 
+// The next line of `in` (without its '\n') into `line`; false at the end. Input that is not
+// text ends the read at once: a NUL byte (as from /dev/zero or a binary file), or a line
+// longer than kMaxLine without a newline.
+constexpr std::size_t kMaxLine = std::size_t(1) << 20;
+bool next_line(std::istream& in, std::string& line, std::string_view source, std::size_t lineno) {
+  line.clear();
+  std::streambuf* sb = in.rdbuf();
+  bool any = false;
+  for (;;) {
+    const int c = sb ? sb->sbumpc() : std::char_traits<char>::eof();
+    if (c == std::char_traits<char>::eof()) return any;
+    any = true;
+    if (c == '\n') return true;
+    if (c == 0)
+      throw Failure(std::string(source) + " line " + std::to_string(lineno) + ": a NUL byte: the input is not text");
+    line.push_back(static_cast<char>(c));
+    if (line.size() > kMaxLine)
+      throw Failure(std::string(source) + " line " + std::to_string(lineno) +
+                    ": longer than 1 MiB without a newline: the input is not CSV text");
+  }
+}
+
 }  // namespace
 
 double parse_number(std::string_view text, std::string_view what) {
@@ -100,7 +123,7 @@ Points read_points(std::istream& in, std::string_view source) {
   size_t first_line = 0;  // the line that fixed the dimension
   std::string line;
   std::vector<double> p;
-  for (size_t lineno = 1; std::getline(in, line); ++lineno) {
+  for (size_t lineno = 1; next_line(in, line, source, lineno); ++lineno) {
     const std::string_view l = trim(line);
     if (l.empty() || l.front() == '#') continue;
     p.clear();
@@ -124,7 +147,7 @@ Points read_points(std::istream& in, std::string_view source) {
     }
     pts.push_back(p);
   }
-  if (in.bad()) throw Failure("cannot read " + std::string(source));
+  if (in.bad() || (&in == &std::cin && std::ferror(stdin))) throw Failure("cannot read " + std::string(source));
   return pts;
 }
 
