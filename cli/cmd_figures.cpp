@@ -97,8 +97,8 @@ std::vector<fig::FigureInfo> previous_index(const std::string& out) {
   try {
     return fig::read_index_json(text.str());
   } catch (const std::exception& e) {
-    std::cerr << "splinefig figures: " << path.string() << ": cannot read it (" << e.what()
-              << "); writing a new one with the figures rendered now\n";
+    std::cerr << "splinefig figures: " << splinefig::cli::printable(path.string() + ": cannot read it (" + e.what() + ")")
+              << "; writing a new one with the figures rendered now\n";
     return {};
   }
 }
@@ -132,7 +132,7 @@ int run(const FiguresArgs& a) {
     } else {
       ++failed;
       failed_names.insert(r.name);
-      std::cerr << "splinefig figures: " << r.error << "\n";
+      std::cerr << "splinefig figures: " << splinefig::cli::printable(r.error) << "\n";
     }
   });
   if (!done.empty()) {

@@ -18,15 +18,9 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// Quotes text for an error message, cut short and with control bytes shown as '?'.
+// Quotes text for an error message, cut short, with control and non-ASCII bytes as \xNN.
 std::string quoted(std::string_view s) {
-  std::string q = "'";
-  for (size_t i = 0; i < s.size() && i < 40; ++i) {
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    q += (c < 0x20 || c == 0x7f) ? '?' : static_cast<char>(c);
-  }
-  if (s.size() > 40) q += "...";
-  return q + "'";
+  return "'" + printable(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
 }
 
 // Parses a finite double or returns why not.
@@ -124,6 +118,8 @@ Points read_points(std::istream& in, std::string_view source) {
   std::string line;
   std::vector<double> p;
   for (size_t lineno = 1; next_line(in, line, source, lineno); ++lineno) {
+    // A UTF-8 byte order mark before the first line (as some editors write) is not data.
+    if (lineno == 1 && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
     const std::string_view l = trim(line);
     if (l.empty() || l.front() == '#') continue;
     p.clear();
