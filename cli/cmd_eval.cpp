@@ -30,6 +30,7 @@ Points sample_companion(const Options& o, const Curve& c, int grain, int derivat
   try {
     if (o.betas.empty())
       return sample_spaced(c, spacing_exponent(*parse_knot_spacing(o.knot_spacing)), grain, derivative);
+    cli::check_input_file(o.betas, "--betas");
     std::ifstream in(o.betas);
     if (!in) throw Failure("--betas: cannot open '" + o.betas + "'");
     const Points b = cli::read_points(in, o.betas);

@@ -1,6 +1,8 @@
 // `splinefig figures [--out DIR] [--only NAME...] [--format png,exr] [--scale S]`: renders
 // every built-in figure spec (figures/specs), then index.json and the gallery index.html.
 // With --only, the index keeps the entries of the figures that were not rendered again.
+// The index is written only after every image of the run: a figure that fails keeps its
+// previous entry (and its previous images), and a run that renders nothing leaves the index alone.
 #include "command.hpp"
 
 #include <splinefig/figures/batch.hpp>
@@ -49,11 +51,10 @@ std::vector<std::string> split(const std::string& s) {
 // The flags checked and turned into batch options.
 fig::BatchOptions batch_options(const FiguresArgs& a) {
   splinefig::cli::check_output_scale(a.scale);
-  splinefig::cli::check_threads(a.threads);
   fig::BatchOptions o;
   o.out_dir = a.out;
   o.scale = a.scale;
-  o.threads = a.threads;
+  o.threads = splinefig::cli::check_threads(a.threads);
   o.software = std::string("splinefig ") + SPLINEFIG_VERSION;
   o.formats.clear();
   for (const auto& f : split(a.format)) {
@@ -96,8 +97,8 @@ std::vector<fig::FigureInfo> previous_index(const std::string& out) {
   try {
     return fig::read_index_json(text.str());
   } catch (const std::exception& e) {
-    std::cerr << "splinefig figures: " << path.string() << ": cannot read it (" << e.what()
-              << "); writing a new one with the figures rendered now\n";
+    std::cerr << "splinefig figures: " << splinefig::cli::printable(path.string() + ": cannot read it (" + e.what() + ")")
+              << "; writing a new one with the figures rendered now\n";
     return {};
   }
 }
@@ -121,6 +122,7 @@ int run(const FiguresArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
   std::vector<fig::FigureInfo> done;
+  std::set<std::string> failed_names;
   int failed = 0;
   fig::render_batch(chosen, options, [&](fig::BatchResult& r) {
     if (r.info) {
@@ -129,13 +131,23 @@ int run(const FiguresArgs& a) {
       done.push_back(std::move(*r.info));
     } else {
       ++failed;
-      std::cerr << "splinefig figures: " << r.error << "\n";
+      failed_names.insert(r.name);
+      std::cerr << "splinefig figures: " << splinefig::cli::printable(r.error) << "\n";
     }
   });
-  const std::vector<fig::FigureInfo> index =
-      a.only.empty() ? done : fig::merge_index(previous_index(a.out), done, specs, a.out);
-  fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
-  fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index));
+  if (!done.empty()) {
+    std::vector<fig::FigureInfo> index = done;
+    if (!a.only.empty()) {
+      index = fig::merge_index(previous_index(a.out), done, specs, a.out);
+    } else if (failed) {
+      // A whole run drops the entries of specs that are gone, but not those that failed now.
+      std::vector<fig::FigureInfo> kept = previous_index(a.out);
+      std::erase_if(kept, [&](const fig::FigureInfo& f) { return !failed_names.count(f.name); });
+      index = fig::merge_index(kept, done, specs, a.out);
+    }
+    fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
+    fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index));
+  }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   std::printf("%zu figure%s in %.2f s (%.2f s CPU) -> %s/index.html\n", done.size(), done.size() == 1 ? "" : "s", total,
@@ -152,7 +164,7 @@ const splinefig::cli::Registration reg{
           ->delimiter(',');
       app.add_option("--format", a->format, "Comma-separated: png, exr (default png)");
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1; 2 for print)");
-      app.add_option("--threads", a->threads, "Rendering threads (default: all cores)");
+      app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
       app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones");
       return splinefig::cli::Runner([a] { return run(*a); });
     }};

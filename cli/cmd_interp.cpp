@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <span>
 #include <utility>
 #include <sstream>
@@ -41,7 +42,11 @@ std::istringstream slurp_stdin() {
   std::string text;
   char buf[1 << 16];
   std::size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) text.append(buf, got);
+  while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
+    // Not text (/dev/zero, a binary file): stop at once, before reading it all.
+    if (std::memchr(buf, 0, got)) throw Failure("stdin: a NUL byte: the input is not text");
+    text.append(buf, got);
+  }
   if (std::ferror(stdin)) throw Failure("cannot read stdin");
   return std::istringstream(std::move(text));
 }

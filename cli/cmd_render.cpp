@@ -29,19 +29,20 @@ const splinefig::cli::Registration reg{
       app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->required();
       app.add_option("-o,--output", a->out, "Output image: .png (8-bit sRGB) or .exr (float linear)")->required();
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1)");
-      app.add_option("--threads", a->threads, "Rendering threads (default: all cores)");
+      app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
       return splinefig::cli::Runner([a] {
         using splinefig::cli::Failure;
         namespace fig = splinefig::figures;
         const std::string ext = extension_of(a->out);
         if (ext != ".png" && ext != ".exr") throw Failure("-o " + a->out + ": the output must end in .png or .exr");
         if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
+        splinefig::cli::check_input_file(a->spec);
         splinefig::cli::check_output_scale(a->scale);
-        splinefig::cli::check_threads(a->threads);
+        const int threads = splinefig::cli::check_threads(a->threads);
         try {
           fig::FigureSpec spec = fig::load_spec(a->spec);
           fig::check_scaled_canvas(spec, a->scale, "--scale");
-          fig::RenderedFigure r = fig::render_figure(spec, {a->scale, a->threads});
+          fig::RenderedFigure r = fig::render_figure(spec, {a->scale, threads});
           splinefig::WriteOptions w;
           w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
           w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;

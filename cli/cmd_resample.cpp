@@ -47,7 +47,7 @@ int run(const Options& o) {
   const Kernel filter = cli::parse_spec_flag("--filter", o.filter, [](const std::string& s) { return parse_kernel(s); });
   const auto edge = parse_edge(o.edge);
   if (!edge) throw Failure("--edge: '" + o.edge + "' is not one of clamp, mirror, wrap, black");
-  if (o.threads < 0) throw Failure("--threads: " + std::to_string(o.threads) + " must be >= 0");
+  const int threads = cli::check_threads(o.threads);
   if (o.size.empty() == o.scale.empty()) throw Failure("give exactly one of --size WxH and --scale S");
   std::pair<int, int> size{0, 0};
   std::vector<double> scale;
@@ -86,7 +86,7 @@ int run(const Options& o) {
     ResampleOptions opt;
     opt.edge = *edge;
     opt.interpolating = o.interpolating;
-    opt.threads = o.threads;
+    opt.threads = threads;
     out = resample(src, size.first, size.second, filter, opt);
     WriteOptions w;
     w.bits = format.name == "png" && format.bits == 16 ? 16 : 8;
@@ -114,7 +114,7 @@ const splinefig::cli::Registration reg{
       app.add_flag("--interpolating", o->interpolating,
                    "Prefilter so that an approximating spline (bspline, tensioned-bspline, beta) "
                    "interpolates the samples");
-      app.add_option("--threads", o->threads, "Worker threads (default: all)");
+      app.add_option("--threads", o->threads, "Worker threads (default: all cores; at most 256)");
       app.footer(
           "Output pixel i has its centre i+0.5 at source position x = (i+0.5) S/D; the filter is "
           "widened by f = max(1, S/D); value = sum_j k((x-(j+0.5))/f) p[j] / sum_j k((x-(j+0.5))/f). "

@@ -7,9 +7,12 @@
 #include <splinefig/spline/basis.hpp>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace splinefig::cli {
@@ -53,12 +56,49 @@ auto parse_spec_flag(const std::string& flag, const std::string& spec, Parse&& p
   }
 }
 
+// `text` as it may be shown on a terminal in a one-line message: control characters (a
+// newline included), DEL and every byte >= 0x80 of the user's input echoed in it are written
+// as \xNN, so that raw bytes, escape sequences or an invisible byte order mark can neither
+// garble the terminal nor hide in the message.
+inline std::string printable(std::string_view text) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c >= 0x7f) {
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
+// A file the command reads by name (a spec, a CSV): it must be a regular file, so that a
+// directory is not taken for an empty input and a FIFO or device (/dev/zero) cannot hang the
+// command. `what` names it ("-o", "--betas", or empty for a positional argument).
+inline void check_input_file(const std::string& path, const std::string& what = "") {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  const std::string name = (what.empty() ? "" : what + " ") + path;
+  if (ec || !fs::exists(st)) return;  // the reader says it is missing, as it always has
+  if (fs::is_directory(st)) throw Failure(name + ": is a directory, not a file");
+  if (!fs::is_regular_file(st)) throw Failure(name + ": not a regular file (a FIFO, socket or device)");
+}
+
 // The flags shared by the commands that render figures.
 inline void check_output_scale(double scale) {
   if (!(scale > 0) || scale > 64) throw Failure("--scale " + std::to_string(scale) + ": must be in (0, 64]");
 }
-inline void check_threads(int threads) {
-  if (threads < 0) throw Failure("--threads: must not be negative");
+// --threads N: 0 is every core; more than max_threads is max_threads (docs/cli.md).
+inline constexpr int max_threads = 256;
+inline int check_threads(int threads) {
+  if (threads < 0) throw Failure("--threads " + std::to_string(threads) + ": must not be negative");
+  return std::min(threads, max_threads);
 }
 
 }  // namespace splinefig::cli

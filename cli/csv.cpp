@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <limits>
 
 namespace splinefig::cli {
@@ -17,15 +18,9 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// Quotes text for an error message, cut short and with control bytes shown as '?'.
+// Quotes text for an error message, cut short, with control and non-ASCII bytes as \xNN.
 std::string quoted(std::string_view s) {
-  std::string q = "'";
-  for (size_t i = 0; i < s.size() && i < 40; ++i) {
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    q += (c < 0x20 || c == 0x7f) ? '?' : static_cast<char>(c);
-  }
-  if (s.size() > 40) q += "...";
-  return q + "'";
+  return "'" + printable(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
 }
 
 // Parses a finite double or returns why not.
@@ -52,6 +47,28 @@ bool to_double(std::string_view text, double& v, std::string& why) {
     return false;
   }
   return true;
+}
+
+// The next line of `in` (without its '\n') into `line`; false at the end. Input that is not
+// text ends the read at once: a NUL byte (as from /dev/zero or a binary file), or a line
+// longer than kMaxLine without a newline.
+constexpr std::size_t kMaxLine = std::size_t(1) << 20;
+bool next_line(std::istream& in, std::string& line, std::string_view source, std::size_t lineno) {
+  line.clear();
+  std::streambuf* sb = in.rdbuf();
+  bool any = false;
+  for (;;) {
+    const int c = sb ? sb->sbumpc() : std::char_traits<char>::eof();
+    if (c == std::char_traits<char>::eof()) return any;
+    any = true;
+    if (c == '\n') return true;
+    if (c == 0)
+      throw Failure(std::string(source) + " line " + std::to_string(lineno) + ": a NUL byte: the input is not text");
+    line.push_back(static_cast<char>(c));
+    if (line.size() > kMaxLine)
+      throw Failure(std::string(source) + " line " + std::to_string(lineno) +
+                    ": longer than 1 MiB without a newline: the input is not CSV text");
+  }
 }
 
 }  // namespace
@@ -100,7 +117,9 @@ Points read_points(std::istream& in, std::string_view source) {
   size_t first_line = 0;  // the line that fixed the dimension
   std::string line;
   std::vector<double> p;
-  for (size_t lineno = 1; std::getline(in, line); ++lineno) {
+  for (size_t lineno = 1; next_line(in, line, source, lineno); ++lineno) {
+    // A UTF-8 byte order mark before the first line (as some editors write) is not data.
+    if (lineno == 1 && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
     const std::string_view l = trim(line);
     if (l.empty() || l.front() == '#') continue;
     p.clear();
@@ -124,7 +143,7 @@ Points read_points(std::istream& in, std::string_view source) {
     }
     pts.push_back(p);
   }
-  if (in.bad()) throw Failure("cannot read " + std::string(source));
+  if (in.bad() || (&in == &std::cin && std::ferror(stdin))) throw Failure("cannot read " + std::string(source));
   return pts;
 }
 

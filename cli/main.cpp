@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       std::none_of(commands.begin(), commands.end(), [&](const Command& c) { return c.name == argv[1]; })) {
     std::string known;
     for (const auto& c : commands) known += (known.empty() ? "" : ", ") + c.name;
-    std::cerr << "splinefig: unknown command '" << argv[1] << "' (commands: " << known << "; see splinefig --help)\n";
+    std::cerr << "splinefig: unknown command '" << printable(argv[1]) << "' (commands: " << known << "; see splinefig --help)\n";
     return 2;
   }
 
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string msg = e.what();
     std::replace(msg.begin(), msg.end(), '\n', ' ');
-    std::cerr << "splinefig: " << msg << " (see splinefig --help)\n";
+    std::cerr << "splinefig: " << printable(msg) << " (see splinefig --help)\n";
     return 2;
   }
 
@@ -61,10 +61,10 @@ int main(int argc, char** argv) {
     try {
       return runners.at(sub)();
     } catch (const Failure& e) {
-      std::cerr << "splinefig " << names[sub] << ": " << e.what() << "\n";
+      std::cerr << "splinefig " << names[sub] << ": " << printable(e.what()) << "\n";
       return e.code;
     } catch (const std::exception& e) {
-      std::cerr << "splinefig " << names[sub] << ": " << e.what() << "\n";
+      std::cerr << "splinefig " << names[sub] << ": " << printable(e.what()) << "\n";
       return 2;
     }
   }

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <atomic>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -304,11 +306,17 @@ Metrics idiff_metrics(const Image& a_in, const Image& b_in, float failthresh, fl
   if (threads <= 1) {
     for (std::size_t i = 0; i < nchunks; ++i) run(i);
   } else {
+    // Chunks handed out in turn; threads the system refuses leave theirs to the others.
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t i; (i = next.fetch_add(1)) < nchunks;) run(i);
+    };
     std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t)
-      pool.emplace_back([&, t] {
-        for (std::size_t i = t; i < nchunks; i += threads) run(i);
-      });
+    try {
+      for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+    } catch (const std::system_error&) {
+    }
+    work();
     for (auto& th : pool) th.join();
   }
 

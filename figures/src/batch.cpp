@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 namespace splinefig::figures {
@@ -66,8 +67,14 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
       ready.notify_all();
     }
   };
+  // Workers the system refuses (RLIMIT_NPROC, memory): the specs go to those that started, or
+  // are rendered on this thread if none did.
   std::vector<std::thread> pool;
-  for (size_t k = 0; k < workers; ++k) pool.emplace_back(work);
+  try {
+    for (size_t k = 0; k < workers; ++k) pool.emplace_back(work);
+  } catch (const std::system_error&) {
+  }
+  if (pool.empty()) work();
   for (size_t i = 0; i < specs.size(); ++i) {
     BatchResult r;
     {

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <system_error>
 #include <thread>
 
 namespace splinefig::render {
@@ -163,8 +164,14 @@ Image rasterize(const Scene& scene, int threads) {
       }
     }
   };
+  // The system may refuse threads (RLIMIT_NPROC, memory): the bands are shared out among the
+  // threads that started, or drawn by this one if none did; the bytes are the same.
   std::vector<std::thread> pool;
-  for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
+  try {
+    for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
+  } catch (const std::system_error&) {
+  }
+  if (pool.empty()) worker();
   for (auto& t : pool) t.join();
   return img;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <complex>
 #include <string>
+#include <system_error>
 #include <thread>
 
 namespace splinefig {
@@ -140,7 +141,10 @@ void parallel_for(long count, int threads, F&& work) {
     for (long c; (c = next.fetch_add(1)) < count;) work(c, tmp);
   };
   std::vector<std::thread> pool;
-  for (long t = 1; t < std::min<long>(threads, count); ++t) pool.emplace_back(run);
+  try {  // threads the system refuses: the work goes to those that started (and this one)
+    for (long t = 1; t < std::min<long>(threads, count); ++t) pool.emplace_back(run);
+  } catch (const std::system_error&) {
+  }
   run();
   for (auto& t : pool) t.join();
 }

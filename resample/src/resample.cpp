@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <system_error>
 #include <thread>
 
 #if defined(__SSE__)
@@ -288,7 +289,10 @@ void parallel_chunks(int chunks, int threads, F&& work) {
     for (int c; (c = next.fetch_add(1)) < chunks;) work(c);
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < std::min(threads, chunks); ++t) pool.emplace_back(run);
+  try {  // threads the system refuses: the chunks go to those that started (and this one)
+    for (int t = 1; t < std::min(threads, chunks); ++t) pool.emplace_back(run);
+  } catch (const std::system_error&) {
+  }
   run();
   for (auto& t : pool) t.join();
 }
@@ -385,7 +389,7 @@ void filter_rows(const Plan& p, const float* a, const float* b, float* ext, floa
 void horizontal_first(const Plan& p, int threads) {
   const int Dy = p.dst.height, Ty = p.ay.taps;
   const size_t drow = p.dst.row_stride();
-  const int chunks = threads == 1 ? 1 : std::min(Dy, threads * 4);
+  const int chunks = threads == 1 ? 1 : static_cast<int>(std::min<long long>(Dy, threads * 4LL));
   parallel_chunks(chunks, threads, [&](int chunk) {
     const int y0 = static_cast<int>(static_cast<long>(Dy) * chunk / chunks);
     const int y1 = static_cast<int>(static_cast<long>(Dy) * (chunk + 1) / chunks);
@@ -428,7 +432,7 @@ void horizontal_first(const Plan& p, int threads) {
 
 void vertical_first(const Plan& p, int threads) {
   const int C = p.C, Dy = p.dst.height;
-  const int chunks = threads == 1 ? 1 : std::min(Dy, threads * 4);
+  const int chunks = threads == 1 ? 1 : static_cast<int>(std::min<long long>(Dy, threads * 4LL));
   parallel_chunks(chunks, threads, [&](int chunk) {
     const int y0 = static_cast<int>(static_cast<long>(Dy) * chunk / chunks);
     const int y1 = static_cast<int>(static_cast<long>(Dy) * (chunk + 1) / chunks);

@@ -37,9 +37,10 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
-// `stdout_path` replaces the captured stdout (e.g. "/dev/full" to make writing fail).
+// `stdout_path` replaces the captured stdout (e.g. "/dev/full" to make writing fail);
+// `stdin_path` replaces `input` as stdin (e.g. "/dev/zero").
 inline Run run(const std::vector<std::string>& args, const std::string& input = "",
-               const std::string& stdout_path = "") {
+               const std::string& stdout_path = "", const std::string& stdin_path = "") {
   static std::atomic<int> counter{0};
   const auto dir = std::filesystem::temp_directory_path() /
                    ("splinefig-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
@@ -49,7 +50,7 @@ inline Run run(const std::vector<std::string>& args, const std::string& input = 
   std::string cmd = "timeout 300 " + shell_quote(SPLINEFIG_EXE);
   const std::string out = stdout_path.empty() ? (dir / "out").string() : stdout_path;
   for (const auto& a : args) cmd.append(" ").append(shell_quote(a));
-  cmd.append(" < ").append(shell_quote((dir / "in").string()));
+  cmd.append(" < ").append(shell_quote(stdin_path.empty() ? (dir / "in").string() : stdin_path));
   cmd.append(" > ").append(shell_quote(out));
   cmd.append(" 2> ").append(shell_quote((dir / "err").string()));
   const int status = std::system(cmd.c_str());

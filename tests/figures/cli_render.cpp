@@ -107,3 +107,42 @@ TEST_CASE("splinefig figures --only with an unreadable index.json writes a new o
   REQUIRE(index["figures"].size() == 1);
   CHECK(index["figures"][0]["name"].string == "one");
 }
+
+TEST_CASE("splinefig figures: a run with failures keeps the previous index entries of what failed") {
+  auto dir = scratch("figures-failed-run-index");
+  fs::create_directories(dir / "specs");
+  auto write_spec = [&](const std::string& name, const std::string& title, int width) {
+    std::ofstream(dir / "specs" / (name + ".toml"))
+        << "title = \"" << title << "\"\n[canvas]\nwidth = " << width << "\nheight = 400\n"
+        << "[[polyline]]\npoints = [[4, 4], [40, 36]]\n";
+  };
+  write_spec("one", "One", 480);
+  write_spec("two", "Two", 560);
+  const std::string base = exe() + " figures --specs " + (dir / "specs").string() + " --out " + (dir / "out").string();
+  auto r = run(base);
+  REQUIRE(r.code == 0);
+  const std::string json = read_file(dir / "out" / "index.json");
+  const std::string html = read_file(dir / "out" / "index.html");
+  const std::string png = read_file(dir / "out" / "one.png");
+  // 480 x 64 = 30720 px a side: every figure fails; nothing of the previous run changes.
+  r = run(base + " --scale 64");
+  CHECK(r.code != 0);
+  CHECK(r.out.find("2 of 2 figures failed") != std::string::npos);
+  CHECK(read_file(dir / "out" / "index.json") == json);
+  CHECK(read_file(dir / "out" / "index.html") == html);
+  CHECK(read_file(dir / "out" / "one.png") == png);
+  // One figure fails, the other renders: the failed one keeps its previous entry and image.
+  std::ofstream(dir / "specs" / "one.toml") << "[canvas]\nwidth = 64\nheight = 48\n[[polyline]]\npoints = []\n";
+  write_spec("two", "Two again", 500);
+  r = run(base);
+  CHECK(r.code != 0);
+  CHECK(r.out.find("1 of 2 figures failed") != std::string::npos);
+  Json index = parse_json(read_file(dir / "out" / "index.json"));
+  REQUIRE(index["figures"].size() == 2);
+  CHECK(index["figures"][0]["name"].string == "one");
+  CHECK(index["figures"][0]["title"].string == "One");
+  CHECK(index["figures"][0]["width"].number == 480);
+  CHECK(index["figures"][1]["title"].string == "Two again");
+  CHECK(read_file(dir / "out" / "one.png") == png);
+  CHECK(read_file(dir / "out" / "index.html").find("Two again") != std::string::npos);
+}
