@@ -5,7 +5,11 @@
 //   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).
 // accuracy/<impl> renders random strokes and reports the coverage error against the exact
 // union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
+// memory/<workload>/<impl> reports the peak memory drawing adds to a process (counter
+// added_MB, measured in a forked child, bench/peak_memory.hpp) and what its input takes
+// (input_MB); splinefig on one thread and on all threads.
 #include <oracle/union_coverage.hpp>
+#include <peak_memory.hpp>
 
 #include <splinefig/renderer/renderer.hpp>
 
@@ -19,7 +23,6 @@
 #include <agg_scanline_u.h>
 #include <benchmark/benchmark.h>
 #include <cairo.h>
-#include <sys/resource.h>
 
 #include <cmath>
 #include <cstdint>
@@ -95,20 +98,24 @@ Workload walks() {
   return w;
 }
 
+Workload make_workload(char id) {
+  switch (id) {
+    case '1': return segments(1);
+    case '3': return segments(3);
+    case 'B': return lissajous();
+    default: return walks();
+  }
+}
+
 const Workload& workload(char id) {
-  static const Workload a1 = segments(1), a3 = segments(3), b = lissajous(), c = walks();
+  static const Workload a1 = make_workload('1'), a3 = make_workload('3'), b = make_workload('B'),
+                        c = make_workload('C');
   switch (id) {
     case '1': return a1;
     case '3': return a3;
     case 'B': return b;
     default: return c;
   }
-}
-
-double peak_rss_mb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 
 // ---- splinefig -------------------------------------------------------------------------
@@ -200,7 +207,6 @@ void BM_splinefig(benchmark::State& state, char id, int threads) {
     splinefig::Image img = draw_splinefig(w, threads);
     benchmark::DoNotOptimize(img.pixels.data());
   }
-  state.counters["peak_rss_MB"] = peak_rss_mb();
 }
 
 void BM_cairo(benchmark::State& state, char id) {
@@ -210,7 +216,6 @@ void BM_cairo(benchmark::State& state, char id) {
     draw_cairo(c, w);
     benchmark::DoNotOptimize(cairo_image_surface_get_data(c.surface));
   }
-  state.counters["peak_rss_MB"] = peak_rss_mb();
 }
 
 void BM_agg(benchmark::State& state, char id) {
@@ -220,7 +225,33 @@ void BM_agg(benchmark::State& state, char id) {
     draw_agg(c, w);
     benchmark::DoNotOptimize(c.buf.data());
   }
-  state.counters["peak_rss_MB"] = peak_rss_mb();
+}
+
+// ---- peak memory, each drawing in a fresh child process --------------------------------
+// impl: 0 splinefig, 1 Cairo, 2 AGG; threads for splinefig only.
+void BM_memory(benchmark::State& state, char id, int impl, int threads) {
+  double input = 0, added = 0;
+  for (auto _ : state) {
+    input = bench::peak_added_mb([] {}, [&] {
+      Workload w = make_workload(id);
+      benchmark::DoNotOptimize(w.paths.data());
+    });
+    Workload w;
+    added = bench::peak_added_mb([&] { w = make_workload(id); }, [&] {
+      if (impl == 0) {
+        splinefig::Image img = draw_splinefig(w, threads);
+        benchmark::DoNotOptimize(img.pixels.data());
+      } else if (impl == 1) {
+        CairoCanvas c;
+        draw_cairo(c, w);
+      } else {
+        AggCanvas c;
+        draw_agg(c, w);
+      }
+    });
+  }
+  state.counters["input_MB"] = input;
+  state.counters["added_MB"] = added;
 }
 
 // ---- accuracy against the exact union oracle -------------------------------------------
@@ -291,9 +322,16 @@ void register_all() {
     benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_cairo, id)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_agg, id)->Unit(benchmark::kMillisecond);
   }
-  benchmark::RegisterBenchmark("accuracy/splinefig", BM_accuracy, 0)->Iterations(1);
-  benchmark::RegisterBenchmark("accuracy/cairo", BM_accuracy, 1)->Iterations(1);
-  benchmark::RegisterBenchmark("accuracy/agg", BM_accuracy, 2)->Iterations(1);
+  for (auto [id, name] : {std::pair{'1', "A1"}, {'3', "A3"}, {'B', "B"}, {'C', "C"}}) {
+    std::string base = std::string("memory/") + name + "/";
+    benchmark::RegisterBenchmark((base + "splinefig").c_str(), BM_memory, id, 0, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_memory, id, 0, all)->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_memory, id, 1, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "agg").c_str(), BM_memory, id, 2, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
+  }
+  benchmark::RegisterBenchmark("accuracy/splinefig", BM_accuracy, 0)->Iterations(1)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("accuracy/cairo", BM_accuracy, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("accuracy/agg", BM_accuracy, 2)->Iterations(1)->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

@@ -50,16 +50,15 @@ TextMask text_mask(std::string_view text, Vec2 anchor, const TextStyle& style, i
   long bx1 = std::min<long>(canvas_w, x0 + r.xend + 1), by1 = std::min<long>(canvas_h, y0 + r.yend + 1);
   if (bx1 <= bx0 || by1 <= by0 || std::abs(x0) > (1L << 30) || std::abs(y0) > (1L << 30)) return m;
   OIIO::ImageSpec spec(static_cast<int>(bx1 - bx0), static_cast<int>(by1 - by0), 1, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf buf(spec);
-  OIIO::ImageBufAlgo::zero(buf);
-  const float white[1] = {1.0f};
-  OIIO::ImageBufAlgo::render_text(buf, static_cast<int>(x0 - bx0), static_cast<int>(y0 - by0), text, fs, font, white);
   m.x = static_cast<int>(bx0);
   m.y = static_cast<int>(by0);
   m.width = spec.width;
   m.height = spec.height;
-  m.coverage.resize(static_cast<std::size_t>(m.width) * m.height);
-  buf.get_pixels(OIIO::ROI(0, m.width, 0, m.height, 0, 1, 0, 1), OIIO::TypeDesc::FLOAT, m.coverage.data());
+  m.coverage.assign(static_cast<std::size_t>(m.width) * m.height, 0.0f);
+  // The glyphs are drawn straight into the zeroed mask, which the ImageBuf wraps.
+  OIIO::ImageBuf buf(spec, m.coverage.data());
+  const float white[1] = {1.0f};
+  OIIO::ImageBufAlgo::render_text(buf, static_cast<int>(x0 - bx0), static_cast<int>(y0 - by0), text, fs, font, white);
   for (float& c : m.coverage) c = std::clamp(c, 0.0f, 1.0f);
   return m;
 }
