@@ -2,12 +2,7 @@
 # (tests/install/consumer/main.cpp, every library used once) with a plain
 #   c++ main.cpp $(pkg-config --cflags --libs splinefig)
 # then runs it.
-file(REMOVE_RECURSE ${WORK_DIR})
-execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix
-  RESULT_VARIABLE rc OUTPUT_QUIET)
-if(rc)
-  message(FATAL_ERROR "cmake --install failed: ${rc}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/install_prefix.cmake)
 file(GLOB_RECURSE pc ${WORK_DIR}/prefix/*/splinefig.pc)
 if(NOT pc)
   message(FATAL_ERROR "the install has no splinefig.pc")

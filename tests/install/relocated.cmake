@@ -2,12 +2,7 @@
 # its built-in specs, and runs the moved `splinefig figures` without SPLINEFIG_SPECS_DIR: it
 # must draw exactly the moved prefix's one spec, so it found share/splinefig/specs next to its
 # own bin/ and neither the source tree (33 specs) nor the original prefix.
-file(REMOVE_RECURSE ${WORK_DIR})
-execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix
-  RESULT_VARIABLE rc OUTPUT_QUIET)
-if(rc)
-  message(FATAL_ERROR "cmake --install failed: ${rc}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/install_prefix.cmake)
 # Moved out of the build tree too: a program of the build tree may use the source tree's specs.
 string(RANDOM LENGTH 8 tag)
 set(MOVED ${TMP_DIR}/splinefig-relocated-${tag})

@@ -1,11 +1,6 @@
 # Installs the built tree into a scratch prefix, then configures, builds and runs a tiny
 # consumer project that uses find_package(splinefig) and links every exported target.
-file(REMOVE_RECURSE ${WORK_DIR})
-execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix
-  RESULT_VARIABLE rc OUTPUT_QUIET)
-if(rc)
-  message(FATAL_ERROR "cmake --install failed: ${rc}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/install_prefix.cmake)
 # The README's complete image test (the ```cpp block after "<!-- readme-test: NAME -->").
 file(READ ${SOURCE_DIR}/README.md readme)
 string(REGEX MATCH "<!-- readme-test: ([a-z_]+\\.cpp) -->\n```cpp\n(.*)" found "${readme}")
