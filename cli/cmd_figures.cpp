@@ -137,12 +137,10 @@ int run(const FiguresArgs& a) {
   });
   if (!done.empty()) {
     std::vector<fig::FigureInfo> index = done;
-    if (!a.only.empty()) {
-      index = fig::merge_index(previous_index(a.out), done, specs, a.out);
-    } else if (failed) {
-      // A whole run drops the entries of specs that are gone, but not those that failed now.
+    if (!a.only.empty() || failed) {
       std::vector<fig::FigureInfo> kept = previous_index(a.out);
-      std::erase_if(kept, [&](const fig::FigureInfo& f) { return !failed_names.count(f.name); });
+      if (a.only.empty())  // a whole run keeps, of the previous entries, only those that failed now
+        std::erase_if(kept, [&](const fig::FigureInfo& f) { return !failed_names.count(f.name); });
       index = fig::merge_index(kept, done, specs, a.out);
     }
     fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));

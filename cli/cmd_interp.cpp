@@ -104,8 +104,9 @@ int run(const Options& o) {
 
   std::string out;
   if (o.output == "bspline") {
-    check_finite(first_non_finite(s.control.coords) == s.control.coords.size(), data, v, w);
-    out = format_points(s.control);
+    std::size_t non_finite = 0;
+    out = format_points(s.control, non_finite);
+    check_finite(non_finite == s.control.coords.size(), data, v, w);
   } else if (o.output == "bezier") {
     const BezierSpline b = bezier_pieces(s);
     check_finite(first_non_finite(b.points.coords) == b.points.coords.size(), data, v, w);

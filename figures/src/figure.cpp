@@ -3,6 +3,8 @@
 
 #include "plot.hpp"
 
+#include <splinefig/spline/kernel.hpp>
+
 #include <cmath>
 
 namespace splinefig::figures {
@@ -136,7 +138,7 @@ RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& option
   Painter p(options.scale);
   RenderedFigure out;
   out.info = build(spec, options.scale, p);
-  out.image = paint(p, out.info.width, out.info.height, spec.canvas.background, pixel_filter(spec.canvas.filter),
+  out.image = paint(p, out.info.width, out.info.height, spec.canvas.background, parse_kernel(spec.canvas.filter),
                     options.threads);
   return out;
 }

@@ -83,8 +83,6 @@ render::TextExtent Painter::measure(const std::string& s, const Font& f) const {
   return e;
 }
 
-Kernel pixel_filter(const std::string& spec) { return parse_kernel(spec); }
-
 Vec2 raster_size(const Raster& r) {
   if (r.file.empty()) return {static_cast<double>(r.width), static_cast<double>(r.height)};
   const Image im = read_image(r.file, ReadMode::linear);
@@ -100,12 +98,12 @@ Image load(const Raster& r) {
     const Image src = read_image(r.file, ReadMode::linear);
     Image px(src.width, src.height, 4);
     const int nc = src.channels, a = src.alpha_channel;
+    int colour[3], k = 0;  // the first three channels that are not alpha
+    for (int c = 0; c < nc && k < 3; ++c)
+      if (c != a) colour[k++] = c;
     for (std::size_t i = 0; i < src.pixel_count(); ++i) {
       const float* s = &src.pixels[i * std::size_t(nc)];
       float* d = &px.pixels[i * 4];
-      int colour[3], k = 0;
-      for (int c = 0; c < nc && k < 3; ++c)
-        if (c != a) colour[k++] = c;
       for (int c = 0; c < 3; ++c) d[c] = k == 3 ? s[colour[c]] : (k > 0 ? s[colour[0]] : 0.0f);
       d[3] = a >= 0 ? s[a] : 1.0f;
     }

@@ -72,7 +72,6 @@ class Painter {
 Vec2 raster_size(const Raster& r);
 
 render::TextStyle text_style(const Font& f, TextAnchor a, double scale);
-Kernel pixel_filter(const std::string& spec);
 
 // Renders the display list at the painter's scale onto a canvas of the given size (pixels).
 Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,

@@ -20,11 +20,14 @@ void composite_raster(const Scene::Item::Raster& r, Image& img, int r0, int r1) 
     return src.at(x, y, k);
   };
   for (int y = iy0; y < iy1; ++y) {
+    // Pixels of the canvas whose centre lies inside the rectangle.
+    const double cy = y + 0.5;
+    if (cy < ylo || cy >= yhi) continue;
+    const double sy = (cy - y0) / (y1 - y0) * src.height;
     for (int x = ix0; x < ix1; ++x) {
-      const double cx = x + 0.5, cy = y + 0.5;
-      // Pixels of the canvas whose centre lies inside the rectangle.
-      if (cx < xlo || cx >= xhi || cy < ylo || cy >= yhi) continue;
-      const double sx = (cx - x0) / (x1 - x0) * src.width, sy = (cy - y0) / (y1 - y0) * src.height;
+      const double cx = x + 0.5;
+      if (cx < xlo || cx >= xhi) continue;
+      const double sx = (cx - x0) / (x1 - x0) * src.width;
       float s[4];
       if (r.nearest) {
         const int px = static_cast<int>(std::floor(sx)), py = static_cast<int>(std::floor(sy));

@@ -2,6 +2,7 @@
 // refuses to create (RLIMIT_NPROC, set in a child process) leave the work to the threads that
 // started: same bytes as one thread, exit 0, never std::terminate. The child runs as user
 // nobody (RLIMIT_NPROC does not bind root); without root and setpriv the test is skipped.
+#include "skip.hpp"
 #include "cli/run.hpp"
 
 #include <catch2/catch.hpp>
@@ -73,7 +74,7 @@ TEST_CASE("resample and render: --threads beyond 256 is clamped and gives the by
 
 TEST_CASE("threads the system refuses: render, resample and figures run with the threads that started") {
   if (!can_limit_threads()) {
-    std::puts("SPLINEFIG-SKIPPED: needs root and setpriv to run a child as nobody under RLIMIT_NPROC");
+    splinefig::testing_support::skip("needs root and setpriv to run a child as nobody under RLIMIT_NPROC");
     return;
   }
   const fs::path dir = scratch("nproc");

@@ -186,7 +186,7 @@ EOF
   cp -r "$tmp/good/." "$tmp/bad1/"; echo "[gone](docs/missing.md)" >> "$tmp/bad1/README.md"
   cp -r "$tmp/good/." "$tmp/bad2/"; echo "[gone](docs/rules.md#no-such-heading)" >> "$tmp/bad2/README.md"
   cp -r "$tmp/good/." "$tmp/bad3/"; printf '// see %s\n' "$(echo "$w" | cut -d'|' -f1 | tr -d '\\')" > "$tmp/bad3/code.cpp"
-  cp -r "$tmp/good/." "$tmp/bad4/"; printf '# the workloads of %s 4\n' "is""sue" > "$tmp/bad4/bench.cpp"  # a tracker number (spelled apart here so this file names none)
+  cp -r "$tmp/good/." "$tmp/bad4/"; printf '# the workloads of %s 4\n' "is""sue" > "$tmp/bad4/bench.cpp"  # a tracker number
   cp -r "$tmp/good/." "$tmp/bad5/"; printf '# Orphan\n' > "$tmp/bad5/docs/orphan.md"
   cp -r "$tmp/good/." "$tmp/bad6/"; printf '// see docs/nothere.md\n' > "$tmp/bad6/code.cpp"
   if ! check_tree "$tmp/good" >/dev/null; then
