@@ -21,7 +21,7 @@ __version__ = _core.version
 
 __all__ = [
     "Basis", "Kernel", "kernel", "kernel_derivative", "response", "fourier", "report",
-    "evaluate", "arclength_points", "arclength", "interpolate",
+    "evaluate", "sample_count", "arclength_points", "arclength", "interpolate",
     "Scene", "render_spec", "render_figure", "figure_names", "specs_dir",
     "resample", "compare", "difference_image", "triptych", "read_image", "write_image",
 ]
@@ -227,11 +227,24 @@ class Basis:
         return f"Basis.parse('{self.spec}')"
 
 
-def kernel(basis: Any, x: Any) -> np.ndarray:
+def _out(out: Any, shape: tuple) -> np.ndarray:
+    if not isinstance(out, np.ndarray) or out.dtype != np.float64 or not out.flags.c_contiguous \
+            or not out.flags.writeable:
+        raise TypeError("out: expected a writeable C-contiguous float64 array")
+    if out.shape != shape:
+        raise ValueError(f"out: shape {out.shape}, expected {shape}")
+    return out
+
+
+def kernel(basis: Any, x: Any, *, out: Optional[np.ndarray] = None) -> np.ndarray:
     """k(x) of a basis (or a filter spec: box, tent, lanczos3) for every element of x, any shape;
-    a float64 array of x's shape."""
+    a float64 array of x's shape (written into `out` when given)."""
     k = _kernel(basis)
-    return _core.kernel_values(k, _numeric(x, "x", np.float64))
+    xa = _numeric(x, "x", np.float64)
+    if out is None:
+        return _core.kernel_values(k, xa)
+    _core.kernel_values_into(k, xa, _out(out, xa.shape))
+    return out
 
 
 def kernel_derivative(basis: Any, x: Any, order: int = 1) -> np.ndarray:
@@ -259,15 +272,27 @@ def report(basis: Any) -> dict:
 _ENDS = ("open", "double", "doubled", "closed")
 
 
-def evaluate(knots: Any, basis: Any, *, grain: int = 16, ends: str = "open", derivative: int = 0) -> np.ndarray:
+def evaluate(knots: Any, basis: Any, *, grain: int = 16, ends: str = "open", derivative: int = 0,
+             out: Optional[np.ndarray] = None) -> np.ndarray:
     """The curve through (or near) an (n, d) array of knots, `grain` points per piece plus the
-    end point: an (m, d) float64 array, as `splinefig eval` prints it."""
+    end point: an (m, d) float64 array, as `splinefig eval` prints it (written into `out`
+    when given; sample_count() gives m)."""
     k = _points(knots, "knots")
     b = _basis(basis)
     g = _int(grain, "grain", 1, 1 << 24)
     e = _choice(ends, "ends", _ENDS)
     d = _int(derivative, "derivative", 0, 2)
-    return _library("knots", _core.evaluate, k, b._b, g, e, d)
+    if out is None:
+        return _library("knots", _core.evaluate, k, b._b, g, e, d)
+    _out(out, (sample_count(k, b, grain=g, ends=e), k.shape[1]))
+    _library("knots", _core.evaluate_into, k, b._b, g, e, d, out)
+    return out
+
+
+def sample_count(knots: Any, basis: Any, *, grain: int = 16, ends: str = "open") -> int:
+    """The number of points evaluate() gives: segments * grain + 1."""
+    return _library("knots", _core.sample_count, _points(knots, "knots"), _basis(basis)._b,
+                    _int(grain, "grain", 1, 1 << 24), _choice(ends, "ends", _ENDS))
 
 
 def arclength_points(knots: Any, basis: Any, *, count: int, ends: str = "open", method: str = "accurate",

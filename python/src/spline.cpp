@@ -114,6 +114,12 @@ void bind_spline(py::module_& m) {
   m.def("basis_kernel", &basis_kernel);
   m.def("parse_kernel", [](const std::string& s) { return parse_kernel(s); });
   m.def("kernel_values", [](const Kernel& k, const f64array& x) { return map_array(x, [&k](double s) { return k(s); }); });
+  m.def("kernel_values_into", [](const Kernel& k, const f64array& x, f64array& out) {
+    const double* in = x.data();
+    double* o = out.mutable_data();
+    py::gil_scoped_release unlocked;
+    for (py::ssize_t i = 0; i < x.size(); ++i) o[i] = k(in[i]);
+  });
   m.def("kernel_derivative", [](const Kernel& k, const f64array& x, int order) {
     if (!k.polynomial()) throw std::invalid_argument("derivative: " + k.name() + " is not a piecewise polynomial");
     return map_array(x, [&k, order](double s) { return k.derivative(s, order); });
@@ -144,6 +150,17 @@ void bind_spline(py::module_& m) {
     py::gil_scoped_release unlocked;
     sample_into(c, grain, derivative, o);
     return out;
+  });
+  m.def("sample_count", [](const f64array& knots, const Basis& b, int grain, const std::string& ends) {
+    return sample_count(curve_of(knots, b, ends), grain);
+  });
+  m.def("evaluate_into", [](const f64array& knots, const Basis& b, int grain, const std::string& ends, int derivative, f64array& out) {
+    const Curve c = curve_of(knots, b, ends);
+    const std::size_t n = sample_count(c, grain) * static_cast<std::size_t>(c.dim());
+    if (static_cast<std::size_t>(out.size()) != n) throw std::invalid_argument("out: has the wrong size");
+    std::span<double> o(out.mutable_data(), n);
+    py::gil_scoped_release unlocked;
+    sample_into(c, grain, derivative, o);
   });
   m.def("segments", [](const f64array& knots, const Basis& b, const std::string& ends) {
     return curve_of(knots, b, ends).segments();

@@ -1,0 +1,81 @@
+"""Overhead of the Python layer: each workload timed through splinefig and through the C++
+library called directly (splinefig_python_overhead, built next to the module), best of REPS
+runs each, and the ratio. Goals: kernel (10^6 points) and evaluate (10^5 knots) within 1.5x,
+resample (2048^2 RGB float32) within 1.2x.
+
+    PYTHONPATH=build/python python3 python/bench/overhead.py [--build build] [--reps 5]
+"""
+import argparse
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+import splinefig
+
+
+def best_of(reps, f):
+    best = float("inf")
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        f()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def cpp(exe, what, n, reps):
+    out = subprocess.run([exe, what, str(n), str(reps)], check=True, capture_output=True, text=True).stdout
+    return [tuple(float(v) for v in line.split()) for line in out.splitlines()]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--build", default=os.path.join(os.path.dirname(__file__), "..", "..", "build"))
+    ap.add_argument("--reps", type=int, default=5)
+    ap.add_argument("--threads", type=int, default=0)
+    args = ap.parse_args()
+    exe = os.path.join(args.build, "python", "splinefig_python_overhead")
+    rows = []
+
+    n = 10**6
+    x = -2.5 + 5.0 * np.arange(n) / (n - 1)
+    k = splinefig.Basis.catmull_rom()
+    py = best_of(args.reps, lambda: splinefig.kernel(k, x))
+    (c, csum), = cpp(exe, "kernel", n, args.reps)
+    assert np.isclose(splinefig.kernel(k, x).sum(), csum, rtol=1e-12, atol=0), "kernel: not the C++ workload"
+    rows.append(("kernel, 1e6 points", py, c, 1.5))
+
+    n = 10**5
+    i = np.arange(n, dtype=np.float64)
+    knots = np.stack([np.sin(0.001 * i) * 100.0, np.cos(0.0007 * i) * 50.0 + 0.01 * i], axis=1)
+    py = best_of(args.reps, lambda: splinefig.evaluate(knots, "bspline", grain=16))
+    (c, csum), (c2, csum2) = cpp(exe, "evaluate", n, args.reps)
+    assert np.isclose(splinefig.evaluate(knots, "bspline", grain=16).sum(), csum, rtol=1e-12, atol=0)
+    rows.append(("evaluate, 1e5 knots, grain 16", py, c, 1.5))
+    buf = np.empty((splinefig.sample_count(knots, "bspline", grain=16), 2))
+    py = best_of(args.reps, lambda: splinefig.evaluate(knots, "bspline", grain=16, out=buf))
+    assert np.isclose(buf.sum(), csum2, rtol=1e-12, atol=0)
+    rows.append(("evaluate, 1e5 knots, grain 16, out=", py, c2, 1.5))
+
+    n = 2048
+    img = (((np.arange(n * n * 3, dtype=np.int64) * 7919) % 1000).astype(np.float32) / np.float32(1000)).reshape(n, n, 3)
+    cres = cpp(exe, "resample", n, args.reps)
+    for (c, csum), d in zip(cres, (n // 2, 3 * n // 2)):
+        py = best_of(args.reps, lambda: splinefig.resample(img, size=(d, d), filter="catmull-rom"))
+        got = splinefig.resample(img, size=(d, d), filter="catmull-rom").astype(np.float64).sum()
+        assert np.isclose(got, csum, rtol=1e-9, atol=0)
+        rows.append((f"resample 2048^2 RGB float32 -> {d}^2", py, c, 1.2))
+
+    print(f"{'workload':40} {'python s':>10} {'C++ s':>10} {'ratio':>7} {'goal':>6}")
+    ok = True
+    for name, py, c, goal in rows:
+        r = py / c
+        ok = ok and r <= goal
+        print(f"{name:40} {py:10.4f} {c:10.4f} {r:7.3f} {goal:6.2f}{'' if r <= goal else '  OVER'}")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
