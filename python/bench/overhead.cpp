@@ -1,6 +1,6 @@
 // The C++ half of python/bench/overhead.py: the workloads of the Python calls made directly on
 // the library, timed the same way (best of `reps` runs). Usage:
-//   splinefig_python_overhead kernel N REPS     k(x) of Catmull-Rom at N points in [-2.5, 2.5]
+//   splinefig_python_overhead kernel N REPS     k(x) of Catmull-Rom at N points in [-2.5, 2.5], into a reused buffer
 //   splinefig_python_overhead evaluate N REPS   a B-spline through N 2-D knots, grain 16, new and into a reused buffer
 //   splinefig_python_overhead resample N REPS   an N x N RGB image to N/2 x N/2 and to 3N/2 x 3N/2 (catmull-rom)
 // Prints "seconds checksum" per workload line.

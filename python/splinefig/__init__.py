@@ -23,7 +23,7 @@ __all__ = [
     "Basis", "Kernel", "kernel", "kernel_derivative", "response", "fourier", "report",
     "evaluate", "sample_count", "arclength_points", "arclength", "interpolate",
     "Scene", "render_spec", "render_figure", "figure_names", "specs_dir",
-    "resample", "compare", "difference_image", "triptych", "read_image", "write_image",
+    "resample", "image_buffer", "compare", "difference_image", "triptych", "read_image", "write_image",
 ]
 
 Kernel = _core.Kernel
@@ -513,12 +513,26 @@ def write_image(path: _PathLike, image: Any, *, encoding: str = "linear", bits: 
     _core.write_image(_path(path, "path"), a, e == "srgb", b, _str(description, "description"))
 
 
+def image_buffer(height: int, width: int, channels: Optional[int] = None) -> np.ndarray:
+    """A zeroed (height, width, channels) float32 array held by a library image ((height,
+    width) when channels is None). resample() reads such an array, like every image splinefig
+    returns, in place; any other array is copied once on the way in."""
+    h = _int(height, "height", 1, 65536)
+    w = _int(width, "width", 1, 65536)
+    c = 1 if channels is None else _int(channels, "channels", 1, 64)
+    if h * w * c > (1 << 30):
+        raise ValueError(f"height, width, channels: {h}x{w}x{c} is over the limit of 2^30 samples")
+    return _core.image_buffer(h, w, c, channels is None)
+
+
 def resample(image: Any, *, size: Any = None, scale: Any = None, filter: Any = "catmull-rom", edge: str = "clamp",
              interpolating: bool = False, threads: int = 0) -> np.ndarray:
     """Resizes an (h, w) or (h, w, c) float32/float64 image with a spline basis function (or
     box, tent, lanczos3) as the reconstruction filter, exactly as `splinefig resample` does:
     size=(width, height), or scale=s or (sx, sy) with the size rounded. The result has the
-    input's dtype (the arithmetic is the library's, in float32) and number of axes."""
+    input's dtype (the arithmetic is the library's, in float32) and number of axes.
+    An array splinefig made (image_buffer(), render(), resample(), read_image()) is read in
+    place; any other is copied once, since the library's image owns its pixels."""
     a = _image(image, "image")
     dtype = np.asarray(image).dtype
     h, w = a.shape[0], a.shape[1]

@@ -38,15 +38,30 @@ Image image_from_array(const f32array& a, Encoding encoding) {
   return im;
 }
 
+constexpr const char* kImageCapsule = "splinefig.Image";
+
 py::array array_from_image(Image&& im, bool squeeze) {
   std::vector<py::ssize_t> shape{im.height, im.width};
   if (!(squeeze && im.channels == 1)) shape.push_back(im.channels);
   auto* owned = new Image(std::move(im));
-  py::capsule free_it(owned, [](void* p) { delete static_cast<Image*>(p); });
+  py::capsule free_it(owned, kImageCapsule, [](PyObject* c) { delete static_cast<Image*>(PyCapsule_GetPointer(c, kImageCapsule)); });
   return py::array_t<float>(shape, owned->pixels.data(), free_it);
 }
 
+const Image* borrowed_image(const f32array& a) {
+  const py::object b = a.base();
+  PyObject* base = b.ptr();
+  if (!base || !PyCapsule_IsValid(base, kImageCapsule)) return nullptr;
+  const auto* im = static_cast<const Image*>(PyCapsule_GetPointer(base, kImageCapsule));
+  const int c = a.ndim() == 3 ? static_cast<int>(a.shape(2)) : 1;
+  if (a.data() != im->pixels.data() || a.shape(0) != im->height || a.shape(1) != im->width || c != im->channels) return nullptr;
+  return im;
+}
+
 void bind_image(py::module_& m) {
+  m.def("image_buffer", [](int height, int width, int channels, bool squeeze) {
+    return array_from_image(Image::zeros(width, height, channels), squeeze);
+  });
   m.def(
       "read_image",
       [](const std::string& path, bool linear) {

@@ -17,10 +17,15 @@ void bind_resample(py::module_& m) {
     o.threads = threads;
     const bool squeeze = a.ndim() == 2;
     Image out;
+    const Image* in_place = borrowed_image(a);
     {
       py::gil_scoped_release unlocked;
-      const Image src = image_from_array(a);
-      out = resample(src, width, height, k, o);
+      if (in_place) {
+        out = resample(*in_place, width, height, k, o);
+      } else {
+        const Image src = image_from_array(a);
+        out = resample(src, width, height, k, o);
+      }
     }
     return array_from_image(std::move(out), squeeze);
   });

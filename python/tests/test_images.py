@@ -124,6 +124,25 @@ def test_resample_shapes_dtypes_and_threads(rng):
     assert f32.base is not None and f32.flags.owndata is False  # the library's image itself, not a copy
 
 
+def test_resample_reads_splinefigs_own_arrays_in_place(rng):
+    buf = splinefig.image_buffer(40, 30, 3)
+    assert buf.shape == (40, 30, 3) and buf.dtype == np.float32 and not buf.any()
+    buf[...] = rng.uniform(size=buf.shape)
+    copy = np.array(buf)  # a plain numpy array: copied on the way in
+    assert np.array_equal(splinefig.resample(buf, size=(13, 17)), splinefig.resample(copy, size=(13, 17)))
+    # A view of part of it is not the library's image: it is copied, with the same result.
+    assert np.array_equal(splinefig.resample(buf[5:], size=(13, 17)), splinefig.resample(copy[5:], size=(13, 17)))
+    assert np.array_equal(splinefig.resample(buf[..., :2], size=(9, 9)), splinefig.resample(copy[..., :2], size=(9, 9)))
+    g = splinefig.image_buffer(20, 10)
+    assert g.shape == (20, 10)
+    g[...] = rng.uniform(size=g.shape)
+    assert np.array_equal(splinefig.resample(g, size=(7, 7)), splinefig.resample(np.array(g), size=(7, 7)))
+    # Chained calls: the renderer's and resampler's results are read in place too.
+    img = splinefig.Scene(32, 32).fill([(4, 4), (28, 4), (16, 28)], color="#3366cc").render()
+    assert np.array_equal(splinefig.resample(splinefig.resample(img, scale=2), scale=0.5),
+                          splinefig.resample(np.array(splinefig.resample(img, scale=2)), scale=0.5))
+
+
 def test_resample_releases_the_gil():
     src = np.random.default_rng(1).uniform(size=(1024, 1024, 3)).astype(np.float32)
     k = splinefig.Basis.catmull_rom().kernel()
