@@ -133,16 +133,13 @@ class ImageCheck:
         os.makedirs(d, exist_ok=True)
         shutil.copyfile(written, os.path.join(d, "actual" + ext))
         shutil.copyfile(baseline, os.path.join(d, "expected" + ext))
-        a, b = result["_a"], result["_b"]
-        splinefig.write_image(os.path.join(d, "diff.png"), _core_difference(a, b, result["_scale"]), encoding="srgb")
-        splinefig.write_image(os.path.join(d, "triptych.png"),
-                              splinefig._core.triptych(a, result["_srgb"], b, result["_srgb"], result["_scale"]),
+        # The pictures of the images as compared (union window and channels), scaled so that
+        # the largest difference is white (diff) or the top of the colour map (triptych).
+        a, b, srgb, scale = result["_a"], result["_b"], result["_srgb"], result["_scale"]
+        splinefig.write_image(os.path.join(d, "diff.png"), splinefig.difference_image(a, b, scale=scale), encoding="srgb")
+        splinefig.write_image(os.path.join(d, "triptych.png"), splinefig._core.triptych(a, srgb, b, srgb, scale),
                               encoding="srgb")
         return d
-
-
-def _core_difference(a: np.ndarray, b: np.ndarray, scale: float) -> np.ndarray:
-    return splinefig._core.difference_image(a, b, float(scale))
 
 
 @pytest.fixture

@@ -38,6 +38,7 @@ def test_an_installed_package_imports_renders_and_plugs_in(tmp_path):
     # Installed, the plugin needs no -p.
     (tmp_path / "t").mkdir()
     (tmp_path / "t" / "test_fixture.py").write_text("def test_fixture(splinefig_image):\n    assert splinefig_image\n")
-    r = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "test_fixture.py"],
-                       env=env, cwd=tmp_path / "t", capture_output=True, text=True)
-    assert r.returncode == 0, r.stdout + r.stderr
+    for extra in ([], ["-p", "splinefig.pytest_plugin"]):  # and naming it as well does no harm
+        r = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider"] + extra + ["test_fixture.py"],
+                           env=env, cwd=tmp_path / "t", capture_output=True, text=True)
+        assert r.returncode == 0, r.stdout + r.stderr
