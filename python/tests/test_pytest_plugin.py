@@ -2,12 +2,9 @@
 matches pass, differences fail with artefacts and a summary, missing baselines fail."""
 import os
 
-import numpy as np
-
 import splinefig
 
 TESTS = '''
-import numpy as np
 import pytest
 import splinefig
 
