@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 from typing import Any, Optional, Sequence, Union
 
 import numpy as np
@@ -357,6 +358,9 @@ class Scene:
         if w * h > (1 << 28):
             raise ValueError(f"width, height: {w}x{h} is more than 2^28 pixels")
         self._s = _library("filter", _core.Scene, w, h, _color(background, "background"), _kernel(filter, "filter"))
+        # render() runs without the interpreter's lock: adding items meanwhile from another
+        # thread waits for it instead of changing the display list under the rasterizer.
+        self._lock = threading.Lock()
 
     @property
     def width(self) -> int:
@@ -381,8 +385,9 @@ class Scene:
         ds = [_real(d, "dashes") for d in dashes]
         if any(d < 0 for d in ds) or (ds and sum(ds) <= 0):
             raise ValueError("dashes: lengths must be >= 0 with a positive sum")
-        _library("points", self._s.polyline, p, bool(closed), _color(color, "color"), wd, _choice(join, "join", ("miter", "round", "bevel")),
-                 _choice(cap, "cap", ("butt", "round", "square")), ml, ds, _real(dash_offset, "dash_offset"))
+        with self._lock:
+            _library("points", self._s.polyline, p, bool(closed), _color(color, "color"), wd, _choice(join, "join", ("miter", "round", "bevel")),
+                     _choice(cap, "cap", ("butt", "round", "square")), ml, ds, _real(dash_offset, "dash_offset"))
         return self
 
     def fill(self, contours: Any, *, color: Any = "#000000", rule: str = "nonzero") -> "Scene":
@@ -397,7 +402,9 @@ class Scene:
             if p.shape[1] != 2:
                 raise ValueError(f"contours: expected (n, 2) arrays, got shape {p.shape}")
             cs.append(p)
-        _library("contours", self._s.fill, cs, _choice(rule, "rule", ("nonzero", "evenodd")), _color(color, "color"))
+        r, c = _choice(rule, "rule", ("nonzero", "evenodd")), _color(color, "color")
+        with self._lock:
+            _library("contours", self._s.fill, cs, r, c)
         return self
 
     def circle(self, centre: Any, radius: float, *, fill: Any = None, stroke: Any = None, width: float = 1.0) -> "Scene":
@@ -409,13 +416,16 @@ class Scene:
             raise ValueError(f"radius: {r} is not positive")
         if fill is None and stroke is None:
             raise ValueError("fill, stroke: give at least one colour")
-        if fill is not None:
-            self._s.fill_circle(c[0], c[1], r, _color(fill, "fill"))
-        if stroke is not None:
-            wd = _real(width, "width")
-            if wd <= 0:
-                raise ValueError(f"width: {wd} is not positive")
-            self._s.stroke_circle(c[0], c[1], r, _color(stroke, "stroke"), wd)
+        fc = None if fill is None else _color(fill, "fill")
+        sc = None if stroke is None else _color(stroke, "stroke")
+        wd = _real(width, "width")
+        if sc is not None and wd <= 0:
+            raise ValueError(f"width: {wd} is not positive")
+        with self._lock:
+            if fc is not None:
+                self._s.fill_circle(c[0], c[1], r, fc)
+            if sc is not None:
+                self._s.stroke_circle(c[0], c[1], r, sc, wd)
         return self
 
     def markers(self, points: Any, *, shape: str = "circle", size: float = 6.0, color: Any = "#000000") -> "Scene":
@@ -425,7 +435,9 @@ class Scene:
         s = _real(size, "size")
         if s <= 0:
             raise ValueError(f"size: {s} is not positive")
-        self._s.markers(p, _choice(shape, "shape", ("circle", "square", "diamond", "cross", "plus")), s, _color(color, "color"))
+        shp, col = _choice(shape, "shape", ("circle", "square", "diamond", "cross", "plus")), _color(color, "color")
+        with self._lock:
+            self._s.markers(p, shp, s, col)
         return self
 
     def text(self, text: str, at: Any, *, size: float = 14.0, color: Any = "#000000", halign: str = "left",
@@ -436,14 +448,17 @@ class Scene:
         s = _real(size, "size")
         if s <= 0:
             raise ValueError(f"size: {s} is not positive")
-        _library("text", self._s.text, _str(text, "text"), a[0], a[1], s, _color(color, "color"),
-                 _choice(halign, "halign", ("left", "center", "right")),
-                 _choice(valign, "valign", ("baseline", "middle", "top", "bottom")), _str(font, "font"))
+        args = (_str(text, "text"), a[0], a[1], s, _color(color, "color"), _choice(halign, "halign", ("left", "center", "right")),
+                _choice(valign, "valign", ("baseline", "middle", "top", "bottom")), _str(font, "font"))
+        with self._lock:
+            _library("text", self._s.text, *args)
         return self
 
     def render(self, *, threads: int = 0) -> np.ndarray:
         """The picture: an (h, w, 4) float32 array, linear light, associated alpha."""
-        return self._s.render(_int(threads, "threads", 0, 256))
+        t = _int(threads, "threads", 0, 256)
+        with self._lock:
+            return self._s.render(t)
 
     def save(self, path: _PathLike, *, threads: int = 0) -> None:
         """Renders and writes .png (8-bit sRGB) or .exr (float linear)."""
