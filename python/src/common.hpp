@@ -24,10 +24,6 @@ Image image_from_array(const f32array& a, Encoding encoding = Encoding::linear);
 // drops the channel axis of a one-channel image.
 py::array array_from_image(Image&& im, bool squeeze = false);
 
-// The Image behind an array that array_from_image made (the whole of it, unsliced), else null:
-// such an array is read in place.
-const Image* borrowed_image(const f32array& a);
-
 // Moves `v` to the heap and returns a numpy array of `shape` viewing it (no copy).
 template <class T, class Vec>
 py::array_t<T> array_owning(Vec&& v, std::vector<py::ssize_t> shape) {

@@ -48,16 +48,6 @@ py::array array_from_image(Image&& im, bool squeeze) {
   return py::array_t<float>(shape, owned->pixels.data(), free_it);
 }
 
-const Image* borrowed_image(const f32array& a) {
-  const py::object b = a.base();
-  PyObject* base = b.ptr();
-  if (!base || !PyCapsule_IsValid(base, kImageCapsule)) return nullptr;
-  const auto* im = static_cast<const Image*>(PyCapsule_GetPointer(base, kImageCapsule));
-  const int c = a.ndim() == 3 ? static_cast<int>(a.shape(2)) : 1;
-  if (a.data() != im->pixels.data() || a.shape(0) != im->height || a.shape(1) != im->width || c != im->channels) return nullptr;
-  return im;
-}
-
 void bind_image(py::module_& m) {
   m.def("image_buffer", [](int height, int width, int channels, bool squeeze) {
     return array_from_image(Image::zeros(width, height, channels), squeeze);
