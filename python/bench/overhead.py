@@ -62,7 +62,8 @@ def one_round(exe, reps):
     own = splinefig.image_buffer(n, n, 3)  # the same pixels in an array the library holds
     own[...] = img
     for (c, csum), d in zip(cpp(exe, "resample", n, reps), (n // 2, 3 * n // 2)):
-        for src, how in ((img, "numpy array (copied)"), (own, "image_buffer (in place)")):
+        for src, how in ((img, "numpy array (in place)"), (own, "image_buffer (in place)"),
+                         (np.asfortranarray(img), "Fortran-order array (copied)")):
             got = splinefig.resample(src, size=(d, d), filter="catmull-rom").astype(np.float64).sum()
             assert np.isclose(got, csum, rtol=1e-9, atol=0)
             py = best_of(reps, lambda: splinefig.resample(src, size=(d, d), filter="catmull-rom"))

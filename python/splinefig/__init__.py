@@ -530,8 +530,7 @@ def write_image(path: _PathLike, image: Any, *, encoding: str = "linear", bits: 
 
 def image_buffer(height: int, width: int, channels: Optional[int] = None) -> np.ndarray:
     """A zeroed (height, width, channels) float32 array held by a library image ((height,
-    width) when channels is None). resample() reads such an array, like every image splinefig
-    returns, in place; any other array is copied once on the way in."""
+    width) when channels is None), for filling in place."""
     h = _int(height, "height", 1, 65536)
     w = _int(width, "width", 1, 65536)
     c = 1 if channels is None else _int(channels, "channels", 1, 64)
@@ -546,8 +545,8 @@ def resample(image: Any, *, size: Any = None, scale: Any = None, filter: Any = "
     box, tent, lanczos3) as the reconstruction filter, exactly as `splinefig resample` does:
     size=(width, height), or scale=s or (sx, sy) with the size rounded. The result has the
     input's dtype (the arithmetic is the library's, in float32) and number of axes.
-    An array splinefig made (image_buffer(), render(), resample(), read_image()) is read in
-    place; any other is copied once, since the library's image owns its pixels."""
+    A C-contiguous float32 array is read in place (it must not change during the call); any
+    other (float64, another layout) is converted to one once."""
     a = _image(image, "image")
     dtype = np.asarray(image).dtype
     h, w = a.shape[0], a.shape[1]

@@ -128,9 +128,9 @@ def test_resample_reads_splinefigs_own_arrays_in_place(rng):
     buf = splinefig.image_buffer(40, 30, 3)
     assert buf.shape == (40, 30, 3) and buf.dtype == np.float32 and not buf.any()
     buf[...] = rng.uniform(size=buf.shape)
-    copy = np.array(buf)  # a plain numpy array: copied on the way in
+    copy = np.array(buf)  # a plain numpy array: read in place as well
     assert np.array_equal(splinefig.resample(buf, size=(13, 17)), splinefig.resample(copy, size=(13, 17)))
-    # A view of part of it is not the library's image: it is copied, with the same result.
+    # Parts of it: rows (still C-contiguous, read in place) and channels (copied), the same results.
     assert np.array_equal(splinefig.resample(buf[5:], size=(13, 17)), splinefig.resample(copy[5:], size=(13, 17)))
     assert np.array_equal(splinefig.resample(buf[..., :2], size=(9, 9)), splinefig.resample(copy[..., :2], size=(9, 9)))
     g = splinefig.image_buffer(20, 10)
@@ -141,6 +141,59 @@ def test_resample_reads_splinefigs_own_arrays_in_place(rng):
     img = splinefig.Scene(32, 32).fill([(4, 4), (28, 4), (16, 28)], color="#3366cc").render()
     assert np.array_equal(splinefig.resample(splinefig.resample(img, scale=2), scale=0.5),
                           splinefig.resample(np.array(splinefig.resample(img, scale=2)), scale=0.5))
+
+
+def _peak_rss_reset():
+    """Resets the process's peak resident size (Linux's VmHWM); False where that is not possible."""
+    try:
+        with open("/proc/self/clear_refs", "w") as f:
+            f.write("5")
+        return True
+    except OSError:
+        return False
+
+
+def _rss_kib(field):
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith(field + ":"):
+                return int(line.split()[1])
+    raise LookupError(field)
+
+
+def test_resample_reads_a_c_contiguous_float32_array_without_copying_it(rng):
+    n = 2048
+    src = rng.uniform(size=(n, n, 3)).astype(np.float32)  # 48 MiB, every page resident
+    if not _peak_rss_reset():
+        pytest.skip("the peak resident size cannot be reset here (/proc/self/clear_refs)")
+    before = _rss_kib("VmRSS")
+    got = splinefig.resample(src, size=(2, 2), filter="box", threads=1)
+    grew = _rss_kib("VmHWM") - before
+    assert grew < src.nbytes // 1024 // 4, f"resident size grew by {grew} KiB: the array was copied"
+    # The copying path (a Fortran-order array) shows in the same measurement, and gives the same bits.
+    fortran = np.asfortranarray(src)
+    assert _peak_rss_reset()
+    before = _rss_kib("VmRSS")
+    assert np.array_equal(splinefig.resample(fortran, size=(2, 2), filter="box", threads=1), got)
+    assert _rss_kib("VmHWM") - before > src.nbytes // 1024 // 2
+
+
+def test_resample_in_place_gives_the_bits_of_the_librarys_own_image(rng):
+    src = rng.uniform(-0.2, 1.2, size=(61, 43, 3)).astype(np.float32)
+    own = splinefig.image_buffer(61, 43, 3)
+    own[...] = src
+    # Float32 data at an odd byte address: numpy allows it, the binding copies it to aligned memory.
+    raw = bytearray(src.nbytes + 1)
+    odd = np.frombuffer(raw, dtype=np.float32, count=src.size, offset=1).reshape(src.shape)
+    odd[...] = src
+    assert not odd.flags.aligned and odd.flags.c_contiguous
+    for kw in (dict(size=(97, 29)), dict(size=(10, 140), filter="bspline", edge="wrap", interpolating=True),
+               dict(scale=0.3, filter="lanczos3", edge="black")):
+        want = splinefig.resample(own, **kw)
+        assert np.array_equal(splinefig.resample(src, **kw), want)
+        assert np.array_equal(splinefig.resample(odd, **kw), want)
+        assert np.array_equal(splinefig.resample(src[7:], **kw), splinefig.resample(own[7:], **kw))
+    assert np.array_equal(src, own)  # read, never written
 
 
 def test_resample_releases_the_gil():
