@@ -1,13 +1,12 @@
-// Image writing: the conversion to the file's encoding, OpenImageIO encoding into memory, and
-// an atomic publication of the bytes (see io.hpp).
+// Image writing: the conversion to the file's encoding, encoding into memory by the codec module
+// (codec.hpp), and an atomic publication of the bytes (see io.hpp).
 #include <splinefig/image/io.hpp>
 #include <splinefig/image/srgb.hpp>
 #include <splinefig/version.hpp>
 
 #include "one_line.hpp"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "codec.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -79,52 +78,52 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   if (png && options.bits != 8 && options.bits != 16)
     unwritable(path, "PNG holds 8 or 16 bits per channel, not " + std::to_string(options.bits));
 
-  const OIIO::TypeDesc type = floats ? OIIO::TypeDesc::FLOAT
-                              : options.bits == 16 ? OIIO::TypeDesc::UINT16
-                                                   : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(im.width, im.height, im.channels, type);
-  spec.x = spec.full_x = im.x;
-  spec.y = spec.full_y = im.y;
-  if (int(im.channel_names.size()) == im.channels) spec.channelnames = im.channel_names;
+  detail::CodecImage spec;
+  spec.width = im.width;
+  spec.height = im.height;
+  spec.channels = im.channels;
+  spec.x = im.x;
+  spec.y = im.y;
+  if (int(im.channel_names.size()) == im.channels) spec.channel_names = im.channel_names;
   spec.alpha_channel = im.alpha_channel < im.channels ? im.alpha_channel : -1;
-  spec.attribute("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
-  if (!options.description.empty()) spec.attribute("ImageDescription", options.description);
+  spec.type = floats ? detail::CodecType::f32 : options.bits == 16 ? detail::CodecType::u16 : detail::CodecType::u8;
+  auto& text = spec.string_attributes;
+  text.emplace_back("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
+  if (!options.description.empty()) text.emplace_back("ImageDescription", options.description);
 
   Image linear;
   std::vector<std::uint8_t> bytes;
   std::vector<std::uint16_t> words;
-  const void* data = nullptr;
   if (floats) {
-    spec.attribute("oiio:ColorSpace", "Linear");
-    if (ext == ".exr") spec.attribute("compression", "zip");
+    text.emplace_back("oiio:ColorSpace", "Linear");
+    if (ext == ".exr") text.emplace_back("compression", "zip");
     if (im.encoding == Encoding::linear) {
-      data = im.pixels.data();
+      spec.data = im.pixels.data();
     } else {
       linear = to_linear(im);
-      data = linear.pixels.data();
+      spec.data = linear.pixels.data();
     }
   } else {
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    spec.attribute("oiio:UnassociatedAlpha", 1);  // the values are straight already
+    text.emplace_back("oiio:ColorSpace", "sRGB");
+    spec.int_attributes.emplace_back("oiio:UnassociatedAlpha", 1);  // the values are straight already
     if (options.bits == 16) {
       words = integer_values<std::uint16_t>(im);
-      data = words.data();
+      spec.data = words.data();
     } else {
       bytes = integer_values<std::uint8_t>(im);
-      data = bytes.data();
+      spec.data = bytes.data();
     }
   }
 
+  const detail::ImageCodec* codec = nullptr;
+  try {
+    codec = &detail::image_codec();
+  } catch (const std::exception& e) {
+    unwritable(path, e.what());
+  }
   std::vector<unsigned char> file;
-  OIIO::Filesystem::IOVecOutput memory(file);
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) unwritable(path, one_line(OIIO::geterror()));
-  if (!out->set_ioproxy(&memory)) unwritable(path, "cannot encode this format in memory");
-  if (!out->open(path, spec)) unwritable(path, one_line(out->geterror()));
-  const bool ok = out->write_image(type, data);
-  const bool closed = out->close();
-  if (!ok || !closed || out->has_error()) unwritable(path, one_line(out->geterror()));
-  out.reset();
+  std::string error;
+  if (!codec->encode(path.c_str(), spec, file, error)) unwritable(path, one_line(error));
   try {
     write_file_atomically(path, file);
   } catch (const UnwritableFile& e) {
