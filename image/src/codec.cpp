@@ -12,6 +12,8 @@
 //   5. the configured install libdir.
 #include "codec.hpp"
 
+#include <splinefig/image/io.hpp>
+
 #include <dlfcn.h>
 
 #include <cstdlib>
@@ -64,7 +66,7 @@ const ImageCodec* load() {
       failures += (failures.empty() ? "" : ", ") + path;
       continue;
     }
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    void* handle = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (!handle) {
       const char* why = dlerror();
       if (path.find('/') == std::string::npos && (!why || std::string(why).rfind(path + ":", 0) == 0)) {
@@ -91,3 +93,14 @@ const ImageCodec& image_codec() {
 }
 
 }  // namespace splinefig::detail
+
+namespace splinefig {
+
+void preload_image_io() noexcept {
+  try {
+    detail::image_codec();
+  } catch (...) {  // the first read or write reports it
+  }
+}
+
+}  // namespace splinefig
