@@ -86,6 +86,7 @@ bool encode(const char* path, const CodecImage& im, std::vector<unsigned char>& 
     spec.alpha_channel = im.alpha_channel;
     for (const auto& [name, value] : im.string_attributes) spec.attribute(name, value);
     for (const auto& [name, value] : im.int_attributes) spec.attribute(name, value);
+    for (const auto& [name, value] : im.float_attributes) spec.attribute(name, value);
     OIIO::Filesystem::IOVecOutput memory(file);
     auto out = OIIO::ImageOutput::create(path);
     if (!out) {

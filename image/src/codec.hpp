@@ -14,7 +14,7 @@
 
 namespace splinefig::detail {
 
-inline constexpr int image_codec_abi = 1;
+inline constexpr int image_codec_abi = 2;
 
 // What an opened file holds (subimage 0, MIP level 0).
 struct CodecHeader {
@@ -40,6 +40,7 @@ struct CodecImage {
   const void* data = nullptr;
   std::vector<std::pair<std::string, std::string>> string_attributes;
   std::vector<std::pair<std::string, int>> int_attributes;
+  std::vector<std::pair<std::string, float>> float_attributes;  // e.g. XResolution
 };
 
 // Every function reports failure by returning false (or null) with a message in `error`; none
