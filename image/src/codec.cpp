@@ -40,8 +40,10 @@ void add_near(std::vector<std::string>& out, const fs::path& object) {
 
 std::vector<std::string> candidates() {
   std::vector<std::string> out;
+  // For the program itself dladdr gives argv[0], which may be relative or a bare name found
+  // in PATH: only an absolute name (a shared object's) is used; /proc/self/exe names the program.
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&image_codec), &info) != 0 && info.dli_fname && *info.dli_fname)
+  if (dladdr(reinterpret_cast<void*>(&image_codec), &info) != 0 && info.dli_fname && info.dli_fname[0] == '/')
     add_near(out, info.dli_fname);
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
