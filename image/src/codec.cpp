@@ -2,10 +2,9 @@
 //
 // Candidates, first found wins:
 //   1. $SPLINEFIG_IMAGE_MODULE, when set (then the only candidate);
-//   2. next to the object holding this code (the program, or a shared library or Python
-//      extension it was linked into), and next to the running program (/proc/self/exe):
-//      <dir>/../<libdir>/splinefig/ for a program in <prefix>/bin, <dir>/splinefig/ for an
-//      object in <prefix>/<libdir> -- so an installed tree works wherever it is moved;
+//   2. near the object holding this code (a shared library or Python extension it was linked
+//      into) and near the running program (/proc/self/exe): <A>/<libdir>/splinefig/ for the
+//      directories A above it (add_near) -- so an installed tree works wherever it is moved;
 //   3. the bare file name, which the dynamic loader looks up in the program's RUNPATH (set by
 //      the package config for programs linking splinefig::image) and LD_LIBRARY_PATH;
 //   4. this build tree's module;
@@ -30,12 +29,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// <A>/<libdir>/splinefig/<module> for the directories A above `object`, nearest first, up to
+// five levels and never the root: a program in <prefix>/bin, a library in <prefix>/<libdir>
+// and a Python extension in <prefix>/lib/python3.X/dist-packages/splinefig all find
+// <prefix>/<libdir>/splinefig.
 void add_near(std::vector<std::string>& out, const fs::path& object) {
   std::error_code ec;
-  const fs::path dir = fs::weakly_canonical(object, ec).parent_path();
-  if (ec || dir.empty()) return;
-  out.push_back((dir / ".." / SPLINEFIG_LIBDIR / "splinefig" / SPLINEFIG_IMAGE_MODULE_NAME).lexically_normal().string());
-  out.push_back((dir / "splinefig" / SPLINEFIG_IMAGE_MODULE_NAME).string());
+  fs::path dir = fs::weakly_canonical(object, ec).parent_path();
+  if (ec) return;
+  for (int level = 0; level < 5 && !dir.empty() && dir != dir.root_path(); ++level, dir = dir.parent_path())
+    out.push_back((dir / SPLINEFIG_LIBDIR / "splinefig" / SPLINEFIG_IMAGE_MODULE_NAME).string());
 }
 
 std::vector<std::string> candidates() {
