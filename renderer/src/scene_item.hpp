@@ -1,6 +1,7 @@
 #pragma once
 // What a Scene records for each drawing call: the call's own arguments, validated. Geometry is
 // built at rasterization time, when the clip region (canvas plus filter support) is known.
+#include <splinefig/renderer/path.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
 #include <memory>
@@ -9,7 +10,7 @@
 namespace splinefig::render {
 
 struct Scene::Item {
-  enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text, Image } kind = Kind::Fill;
+  enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text, Image, PathFill, PathStroke } kind = Kind::Fill;
   std::vector<std::vector<Vec2>> contours;  // Fill: the contours; Stroke: contours[0] the path
   bool closed = false;
   StrokeStyle stroke;
@@ -29,6 +30,7 @@ struct Scene::Item {
     bool nearest = true;
   };
   std::shared_ptr<const Raster> raster;  // Image only
+  std::shared_ptr<const Path> path;      // PathFill, PathStroke only
 };
 
 }  // namespace splinefig::render

@@ -68,6 +68,14 @@ struct TextExtent {
 };
 TextExtent measure_text(std::string_view text, const TextStyle& style);
 
+class Path;  // path.hpp: lines and cubic Beziers
+class SceneVisitor;
+
+// The outline of a polygonal marker (square, diamond, plus, cross) of overall size `size`
+// (side, or arm span; plus and cross arms are size/4 thick) centred at `centre`, as one closed
+// contour. Circle markers are disks of diameter `size`: empty.
+std::vector<Vec2> marker_polygon(Marker shape, Vec2 centre, double size);
+
 // A drawing: a display list, rasterized at once (by tiles or bands, on any number of
 // threads, with byte-identical results). Items are composited in the order added.
 class Scene {
@@ -79,6 +87,11 @@ class Scene {
   void fill_circle(Vec2 centre, double radius, Color color);
   void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color);
   void marker(Marker shape, Vec2 centre, double size, Color fill);
+  // A path (path.hpp) filled, or stroked as the union of its pieces like a polyline. It is
+  // flattened within the arc tolerance (1e-4 px) when the scene is rasterized, so a cubic
+  // costs no more than the polyline it becomes, and a vector writer keeps its Beziers.
+  void fill_path(const Path& path, FillRule rule, Color color);
+  void stroke_path(const Path& path, const StrokeStyle& style, Color color);
   void text(std::string_view text, Vec2 anchor, const TextStyle& style);
   // A raster image (linear RGBA, associated alpha: the form rasterize returns) drawn into the
   // rectangle with corners p0 and p1: each canvas pixel whose centre lies inside samples the
@@ -89,6 +102,12 @@ class Scene {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  Color background() const { return background_; }
+  const Kernel& filter() const { return filter_; }
+
+  // Every recorded item, in drawing order, as the call that recorded it (for writers of
+  // other formats: vector/).
+  void visit(SceneVisitor& v) const;
 
   struct Item;  // defined by the implementation
   const std::vector<Item>& items() const;
@@ -103,6 +122,22 @@ class Scene {
   Kernel filter_;
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
+};
+
+// What Scene::visit reports: one call per item, with the arguments the item was recorded
+// with (validated; images as recorded: linear RGBA, associated alpha).
+class SceneVisitor {
+ public:
+  virtual ~SceneVisitor() = default;
+  virtual void stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color) = 0;
+  virtual void fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) = 0;
+  virtual void fill_path(const Path& path, FillRule rule, Color color) = 0;
+  virtual void stroke_path(const Path& path, const StrokeStyle& style, Color color) = 0;
+  virtual void fill_circle(Vec2 centre, double radius, Color color) = 0;
+  virtual void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) = 0;
+  virtual void marker(Marker shape, Vec2 centre, double size, Color fill) = 0;
+  virtual void text(std::string_view text, Vec2 anchor, const TextStyle& style) = 0;
+  virtual void image(const Image& image, Vec2 p0, Vec2 p1, Scene::Sampling sampling) = 0;
 };
 
 // The picture as a linear-light RGBA image (associated alpha, channels R, G, B, A).
