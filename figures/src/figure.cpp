@@ -133,13 +133,19 @@ FigureInfo layout_figure(const FigureSpec& spec, double scale) {
   return build(spec, scale, p);
 }
 
+FigureScene figure_scene(const FigureSpec& spec, double scale) {
+  check_scaled_canvas(spec, scale, spec.path);
+  Painter p(scale);
+  FigureInfo info = build(spec, scale, p);
+  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, parse_kernel(spec.canvas.filter));
+  return {std::move(scene), std::move(info)};
+}
+
 RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& options) {
-  check_scaled_canvas(spec, options.scale, spec.path);
-  Painter p(options.scale);
+  FigureScene fs = figure_scene(spec, options.scale);
   RenderedFigure out;
-  out.info = build(spec, options.scale, p);
-  out.image = paint(p, out.info.width, out.info.height, spec.canvas.background, parse_kernel(spec.canvas.filter),
-                    options.threads);
+  out.image = render::rasterize(fs.scene, options.threads);
+  out.info = std::move(fs.info);
   return out;
 }
 

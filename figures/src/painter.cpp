@@ -20,6 +20,10 @@ void Painter::stroke(std::vector<Vec2> pts, bool closed, const render::StrokeSty
   if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
   ops_.push_back(StrokeOp{std::move(pts), closed, s, c});
 }
+void Painter::stroke(render::Path path, const render::StrokeStyle& s, Color c) {
+  if (path.empty() || !(s.width > 0) || c.a <= 0) return;
+  ops_.push_back(PathStrokeOp{std::move(path), s, c});
+}
 void Painter::fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c) {
   if (c.a <= 0) return;
   ops_.push_back(FillOp{std::move(contours), rule, c});
@@ -151,8 +155,7 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
 
 }  // namespace
 
-Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,
-            int threads) {
+render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter) {
   const double s = p.scale();
   render::Scene scene(width, height, background, filter);
   for (const Op& op : p.ops()) {
@@ -162,6 +165,8 @@ Image paint(const Painter& p, int width, int height, Color background, const Ker
           if constexpr (std::is_same_v<T, StrokeOp>) {
             auto pts = scaled(o.points, s);
             scene.stroke_polyline(pts, o.closed, scaled(o.style, s), o.color);
+          } else if constexpr (std::is_same_v<T, PathStrokeOp>) {
+            scene.stroke_path(o.path.transformed(s, 0, 0, s, 0, 0), scaled(o.style, s), o.color);
           } else if constexpr (std::is_same_v<T, FillOp>) {
             std::vector<std::vector<Vec2>> c;
             for (const auto& contour : o.contours) c.push_back(scaled(contour, s));
@@ -181,7 +186,7 @@ Image paint(const Painter& p, int width, int height, Color background, const Ker
         },
         op);
   }
-  return render::rasterize(scene, threads);
+  return scene;
 }
 
 }  // namespace splinefig::figures::detail

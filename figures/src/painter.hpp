@@ -2,6 +2,7 @@
 // Internal: a display list in layout units (1x pixels) that is scaled to the output size
 // when it becomes one renderer scene; raster images are scene items like the rest.
 #include <splinefig/figures/spec.hpp>
+#include <splinefig/renderer/path.hpp>
 
 #include <map>
 #include <tuple>
@@ -13,6 +14,11 @@ namespace splinefig::figures::detail {
 struct StrokeOp {
   std::vector<Vec2> points;
   bool closed;
+  render::StrokeStyle style;
+  Color color;
+};
+struct PathStrokeOp {  // exact curves: lines and Beziers
+  render::Path path;
   render::StrokeStyle style;
   Color color;
 };
@@ -43,7 +49,7 @@ struct ImageOp {
   Raster raster;
   double x0, y0, x1, y1;  // target rectangle in layout units
 };
-using Op = std::variant<StrokeOp, FillOp, CircleOp, MarkerOp, TextOp, ImageOp>;
+using Op = std::variant<StrokeOp, PathStrokeOp, FillOp, CircleOp, MarkerOp, TextOp, ImageOp>;
 
 class Painter {
  public:
@@ -51,6 +57,7 @@ class Painter {
   double scale() const { return scale_; }
 
   void stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c);
+  void stroke(render::Path path, const render::StrokeStyle& s, Color c);
   void fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c);
   void circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke);
   void marker(render::Marker shape, Vec2 centre, double size, Color c);
@@ -73,8 +80,7 @@ Vec2 raster_size(const Raster& r);
 
 render::TextStyle text_style(const Font& f, TextAnchor a, double scale);
 
-// Renders the display list at the painter's scale onto a canvas of the given size (pixels).
-Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,
-                    int threads);
+// The display list at the painter's scale as a scene of the given size (pixels).
+render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter);
 
 }  // namespace splinefig::figures::detail

@@ -1,0 +1,30 @@
+#pragma once
+// What both writers share: sRGB colours and raster items as Cairo image surfaces.
+#include <splinefig/renderer/path.hpp>
+#include <splinefig/renderer/renderer.hpp>
+
+#include <cairo.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace splinefig::vector::detail {
+
+struct Srgb {
+  double r, g, b, a;  // sRGB-encoded colour, straight alpha
+};
+Srgb to_srgb(render::Color c);
+// "#rrggbb" of the colour's sRGB encoding, 8 bits (the PNG's rounding).
+std::string hex(render::Color c);
+
+// An ARGB32 surface (premultiplied sRGB, 8 bits) of a linear, associated-alpha RGBA image.
+// The caller destroys it.
+cairo_surface_t* image_surface(const Image& im);
+// The image as PNG bytes (sRGB, straight alpha).
+std::vector<unsigned char> png_bytes(const Image& im);
+
+// The outline of a text item as the raster draws it, when the renderer provides outlines.
+std::optional<render::Path> text_outline(std::string_view text, render::Vec2 anchor, const render::TextStyle& style);
+
+}  // namespace splinefig::vector::detail
