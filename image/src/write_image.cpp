@@ -89,6 +89,11 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   spec.alpha_channel = im.alpha_channel < im.channels ? im.alpha_channel : -1;
   spec.attribute("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
   if (!options.description.empty()) spec.attribute("ImageDescription", options.description);
+  if (options.dpi > 0) {  // PNG pHYs, EXR and TIFF resolution attributes
+    spec.attribute("XResolution", static_cast<float>(options.dpi));
+    spec.attribute("YResolution", static_cast<float>(options.dpi));
+    spec.attribute("ResolutionUnit", "in");
+  }
 
   Image linear;
   std::vector<std::uint8_t> bytes;

@@ -224,14 +224,12 @@ class SvgWriter final : public render::SceneVisitor {
 std::string to_svg(const render::Scene& scene, const Options& o) {
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
   const int w = scene.width(), h = scene.height();
-  if (o.dpi > 0) {
-    num(out, w / o.dpi);
-    out += "in\" height=\"";
-    num(out, h / o.dpi);
-    out += "in\"";
-  } else {
-    out += std::to_string(w) + "\" height=\"" + std::to_string(h) + "\"";
-  }
+  // CSS px, 96 to the inch.
+  const double css = o.dpi > 0 ? 96.0 / o.dpi : 1.0;
+  num(out, w * css);
+  out += "\" height=\"";
+  num(out, h * css);
+  out += "\"";
   out += " viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) + "\">\n";
   if (!o.title.empty()) out += "<title>" + escape(o.title) + "</title>\n";
   const render::Color bg = scene.background();

@@ -14,8 +14,8 @@ namespace splinefig::vector {
 
 struct Options {
   // Pixels per inch of the scene's pixels: the physical size is width/dpi inches. 0: the CSS
-  // pixel (96 per inch). SVG then gives its size in px, otherwise in inches; a PDF page is
-  // width * 72 / dpi points wide.
+  // pixel (96 per inch). An SVG is width * 96 / dpi CSS px wide (its viewBox is the scene's
+  // pixels), a PDF page width * 72 / dpi points.
   double dpi = 0;
   std::string title;    // SVG <title>, PDF Title
   std::string creator;  // PDF Creator ("splinefig 1.2.3")
