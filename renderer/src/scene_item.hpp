@@ -1,6 +1,7 @@
 #pragma once
 // What a Scene records for each drawing call: the call's own arguments, validated. Geometry is
 // built at rasterization time, when the clip region (canvas plus filter support) is known.
+#include <splinefig/renderer/path.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
 #include <memory>
@@ -21,6 +22,7 @@ struct Scene::Item {
   struct Text {
     std::string text;
     TextStyle style;
+    Path outline;  // the glyph outlines in canvas pixels (text_path), filled with the nonzero rule
   };
   std::unique_ptr<Text> text;  // Text only: keeps the common item small
   struct Raster {
