@@ -48,7 +48,7 @@ render::TextStyle text_style(const Font& f, TextAnchor a, double scale) {
   t.color = f.color;
   t.halign = a.halign;
   t.valign = a.valign;
-  t.font = f.bold ? "DejaVuSans-Bold" : "DejaVuSans";
+  t.weight = f.bold ? render::FontWeight::Bold : render::FontWeight::Normal;
   return t;
 }
 
@@ -66,7 +66,7 @@ render::TextExtent measure_plain(const std::string& text, double size, bool bold
   }
   render::TextStyle t;
   t.size = size;
-  t.font = bold ? "DejaVuSans-Bold" : "DejaVuSans";
+  t.weight = bold ? render::FontWeight::Bold : render::FontWeight::Normal;
   render::TextExtent e = render::measure_text(text, t);
   std::lock_guard<std::mutex> lock(mutex);
   if (cache.size() > 100000) cache.clear();

@@ -38,7 +38,7 @@ bool single_segment(const std::vector<Vec2>& p, bool closed) {
 
 }  // namespace
 
-void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& g, Prepared& out, int canvas_w,
+void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& g, Prepared& out, int /*canvas_w*/,
                   int canvas_h) {
   using K = Scene::Item::Kind;
   const float a = it.color.a;
@@ -52,13 +52,6 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
     const double y0 = std::min(it.raster->p0.y, it.raster->p1.y), y1 = std::max(it.raster->p0.y, it.raster->p1.y);
     out.row0 = static_cast<int>(std::clamp(std::floor(y0), 0.0, static_cast<double>(canvas_h)));
     out.row1 = static_cast<int>(std::clamp(std::ceil(y1), 0.0, static_cast<double>(canvas_h)));
-    return;
-  }
-  if (it.kind == K::Text) {
-    out.is_text = true;
-    out.mask = text_mask(it.text->text, it.centre, it.text->style, canvas_w, canvas_h);
-    out.row0 = out.mask.y;
-    out.row1 = out.mask.y + out.mask.height;
     return;
   }
   Shape& s = out.shape;
@@ -113,7 +106,14 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
       }
       break;
     }
-    case K::Text: case K::Image: break;
+    case K::Text: {
+      // Glyph outlines flattened within the arc tolerance, filled with the nonzero rule.
+      const Path::Flat flat = it.text->outline.flatten(kArcTolerance);
+      for (const auto& c : flat.contours) polygon(c, b);
+      s.rule = FillRule::NonZero;
+      break;
+    }
+    case K::Image: break;
   }
   s.chain_end = g.chains.size();
   auto first = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_begin);

@@ -4,6 +4,8 @@
 
 #include "huge_pages.hpp"
 
+#include <splinefig/renderer/text.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -210,7 +212,7 @@ void Scene::visit(SceneVisitor& v) const {
       case K::Disk: v.fill_circle(it.centre, it.radius, it.color); break;
       case K::Ring: v.stroke_circle(it.centre, it.radius, it.stroke, it.color); break;
       case K::Marker: v.marker(it.marker, it.centre, it.radius, it.color); break;
-      case K::Text: v.text(it.text->text, it.centre, it.text->style); break;
+      case K::Text: v.text(it.text->text, it.centre, it.text->style, it.text->outline); break;
       case K::Image:
         v.image(*it.raster->image, it.raster->p0, it.raster->p1, it.raster->nearest ? Sampling::Nearest : Sampling::Bilinear);
         break;
@@ -223,9 +225,11 @@ void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
   check_finite(style.size, "text", "font size");
   if (style.size <= 0 || style.size > 4096) bad("text: font size " + std::to_string(style.size) + " is outside (0, 4096]");
   check_color(style.color, "text");
+  check_finite(style.angle, "text", "angle");
   Item it;
   it.kind = Item::Kind::Text;
-  it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style});
+  // Laid out now: bad UTF-8 and missing characters are errors of this call.
+  it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style, text_path(text, anchor, style)});
   it.centre = anchor;
   it.color = style.color;
   add(*items_, std::move(it));

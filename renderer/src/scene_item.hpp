@@ -22,6 +22,7 @@ struct Scene::Item {
   struct Text {
     std::string text;
     TextStyle style;
+    Path outline;  // the glyph outlines in canvas pixels (text_path), filled with the nonzero rule
   };
   std::unique_ptr<Text> text;  // Text only: keeps the common item small
   struct Raster {

@@ -98,7 +98,9 @@ struct Recorder : SceneVisitor {
   void fill_circle(Vec2, double r, Color) override { log += "disk" + std::to_string(static_cast<int>(r)) + " "; }
   void stroke_circle(Vec2, double r, const StrokeStyle&, Color) override { log += "ring" + std::to_string(static_cast<int>(r)) + " "; }
   void marker(Marker m, Vec2, double, Color) override { log += m == Marker::Plus ? "plus " : "marker "; }
-  void text(std::string_view t, Vec2, const TextStyle&) override { log += "text:" + std::string(t) + " "; }
+  void text(std::string_view t, Vec2, const TextStyle&, const Path& outline) override {
+    log += "text:" + std::string(t) + (outline.empty() ? " " : "+outline ");
+  }
   void image(const splinefig::Image& im, Vec2, Vec2, Scene::Sampling smp) override {
     log += "image" + std::to_string(im.width) + (smp == Scene::Sampling::Nearest ? "n " : "b ");
   }
@@ -123,7 +125,7 @@ TEST_CASE("visit reports every item in drawing order with its arguments") {
   s.image(std::make_shared<const splinefig::Image>(splinefig::Image(3, 2, 4)), {0, 0}, {3, 2}, Scene::Sampling::Nearest);
   Recorder r;
   s.visit(r);
-  CHECK(r.log == "stroke3c fill2 fillpath2e strokepath4w3 disk2 ring4 plus text:hi image3n ");
+  CHECK(r.log == "stroke3c fill2 fillpath2e strokepath4w3 disk2 ring4 plus text:hi+outline image3n ");
   CHECK(s.background().r == 0.5f);
 }
 

@@ -63,9 +63,9 @@ class PdfWriter final : public render::SceneVisitor {
     if (!(size > 0)) return;
     fill_polygon({render::marker_polygon(m, ctr, size)}, render::FillRule::NonZero, c);
   }
-  void text(std::string_view s, Vec2 anchor, const render::TextStyle& style) override {
-    std::optional<render::Path> p = detail::text_outline(s, anchor, style);
-    if (p) fill_path(*p, render::FillRule::NonZero, style.color);
+  void text(std::string_view s, Vec2, const render::TextStyle& style, const render::Path& outline) override {
+    (void)s;
+    fill_path(outline, render::FillRule::NonZero, style.color);
   }
   void image(const Image& im, Vec2 p0, Vec2 p1, render::Scene::Sampling smp) override {
     cairo_surface_t* s = detail::image_surface(im);

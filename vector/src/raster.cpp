@@ -61,8 +61,4 @@ std::vector<unsigned char> png_bytes(const Image& im) {
   return out;
 }
 
-std::optional<render::Path> text_outline(std::string_view, render::Vec2, const render::TextStyle&) {
-  return std::nullopt;  // no glyph outlines from the renderer yet: text is not written
-}
-
 }  // namespace splinefig::vector::detail

@@ -24,7 +24,4 @@ cairo_surface_t* image_surface(const Image& im);
 // The image as PNG bytes (sRGB, straight alpha).
 std::vector<unsigned char> png_bytes(const Image& im);
 
-// The outline of a text item as the raster draws it, when the renderer provides outlines.
-std::optional<render::Path> text_outline(std::string_view text, render::Vec2 anchor, const render::TextStyle& style);
-
 }  // namespace splinefig::vector::detail

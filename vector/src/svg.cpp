@@ -116,12 +116,11 @@ class SvgWriter final : public render::SceneVisitor {
     if (!(size > 0)) return;
     fill_polygon({render::marker_polygon(m, ctr, size)}, render::FillRule::NonZero, c);
   }
-  void text(std::string_view s, Vec2 anchor, const render::TextStyle& style) override {
-    std::optional<render::Path> p = detail::text_outline(s, anchor, style);
-    if (!p || p->empty() || style.color.a <= 0) return;
+  void text(std::string_view s, Vec2, const render::TextStyle& style, const render::Path& outline) override {
+    if (outline.empty() || style.color.a <= 0) return;
     const std::string label = escape(s);
     out += "<path aria-label=\"" + label + "\" d=\"";
-    path(*p);
+    path(outline);
     out += "\"";
     fill_attributes(render::FillRule::NonZero, style.color);
     out += "><title>" + label + "</title></path>\n";

@@ -55,14 +55,25 @@ enum class Marker { Circle, Square, Diamond, Cross, Plus };
 enum class HAlign { Left, Center, Right };
 enum class VAlign { Baseline, Middle, Top, Bottom };
 
+// Text is UTF-8, set in a DejaVu face (text.hpp: the faces, their lookup and fallback), shaped
+// by HarfBuzz and drawn as glyph outlines by the same exact-area rasterizer as every shape.
+enum class FontFamily { Sans, Serif, Mono };
+enum class FontWeight { Normal, Bold };
+
 struct TextStyle {
-  double size = 14.0;  // font size in pixels
+  double size = 14.0;  // font size (the em) in pixels
   Color color{0, 0, 0, 1};
-  HAlign halign = HAlign::Left;
-  VAlign valign = VAlign::Baseline;
-  std::string font = "DejaVuSans";  // OpenImageIO font name
+  HAlign halign = HAlign::Left;      // by the advance width: Left puts the pen origin on the anchor
+  VAlign valign = VAlign::Baseline;  // Top/Bottom/Middle: by the ink above and below the baseline
+  FontFamily family = FontFamily::Sans;
+  FontWeight weight = FontWeight::Normal;
+  bool italic = false;  // the Oblique (Sans, Mono) or Italic (Serif) face
+  double angle = 0;     // degrees, counter-clockwise as seen on the canvas, about the anchor
 };
 
+// The advance width of the shaped string and the ink above (ascent) and below (descent) the
+// baseline, in pixels, unrotated. Throws std::invalid_argument for text that is not valid
+// UTF-8 or a character no DejaVu face has.
 struct TextExtent {
   double width = 0, ascent = 0, descent = 0;  // pixels
 };
@@ -136,7 +147,8 @@ class SceneVisitor {
   virtual void fill_circle(Vec2 centre, double radius, Color color) = 0;
   virtual void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) = 0;
   virtual void marker(Marker shape, Vec2 centre, double size, Color fill) = 0;
-  virtual void text(std::string_view text, Vec2 anchor, const TextStyle& style) = 0;
+  // `outline`: the glyph outlines the raster fills (text_path of text, anchor and style).
+  virtual void text(std::string_view text, Vec2 anchor, const TextStyle& style, const Path& outline) = 0;
   virtual void image(const Image& image, Vec2 p0, Vec2 p1, Scene::Sampling sampling) = 0;
 };
 
