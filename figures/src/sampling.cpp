@@ -169,8 +169,9 @@ void append_bezier(render::Path& path, const Points& bz, const PixelMap& map) {
   const int n = static_cast<int>(bz.size()) - 1;
   auto at = [&](int k) { return map(Vec2{bz.coords[2 * k], bz.coords[2 * k + 1]}); };
   const Vec2 p0 = at(0);
+  // Pieces of a continuous spline meet up to rounding (1e-13 px): no joining line for that.
   if (path.empty()) path.move_to(p0);
-  else if (const Vec2 cur = path.points().back(); cur.x != p0.x || cur.y != p0.y) path.line_to(p0);
+  else if (const Vec2 cur = path.points().back(); std::hypot(cur.x - p0.x, cur.y - p0.y) > 1e-9) path.line_to(p0);
   if (n == 1) path.line_to(at(1));
   else if (n == 2) path.quad_to(at(1), at(2));
   else path.cubic_to(at(1), at(2), at(3));
