@@ -73,7 +73,7 @@ TEST_CASE("SVG keeps each label's string next to its outline") {
   CHECK(svg.find("<text") == std::string::npos);  // outlines: no fonts needed
 }
 
-TEST_CASE("--dpi: PNG pHYs, EXR resolution, PDF page and SVG size follow one rule") {
+TEST_CASE("dpi: PNG pHYs, EXR resolution, PDF page and SVG size follow one rule") {
   const auto dir = figtest::scratch("vector-dpi");
   const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/cbasis.toml";  // 800 x 500
   auto render = [&](const std::string& out, const std::string& flags) {
