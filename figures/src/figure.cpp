@@ -99,7 +99,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   const Layout& L = spec.layout;
   double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
-    Font tf{spec.title_size, *render::parse_hex_color("#222222"), true};
+    Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true};
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;
   }
@@ -129,13 +129,13 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
 
 FigureInfo layout_figure(const FigureSpec& spec, double scale) {
   check_scaled_canvas(spec, scale, spec.path);
-  Painter p(scale);
+  Painter p(scale, spec.font_family);
   return build(spec, scale, p);
 }
 
 RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& options) {
   check_scaled_canvas(spec, options.scale, spec.path);
-  Painter p(options.scale);
+  Painter p(options.scale, spec.font_family);
   RenderedFigure out;
   out.info = build(spec, options.scale, p);
   out.image = paint(p, out.info.width, out.info.height, spec.canvas.background, parse_kernel(spec.canvas.filter),

@@ -34,6 +34,70 @@ const char* type_name(toml::node_type t) {
 
 }  // namespace
 
+std::string utf8_problem(std::string_view text, const std::string& file) {
+  std::size_t i = 0, line = 1, line_start = 0;
+  auto bad_at = [&]() -> std::size_t {  // the offset of the first invalid byte, or npos
+    while (i < text.size()) {
+      const auto b0 = static_cast<unsigned char>(text[i]);
+      if (b0 == '\n') {
+        ++line;
+        line_start = i + 1;
+      }
+      std::size_t n = 1;
+      char32_t c = b0, min = 0;
+      if (b0 >= 0x80) {
+        if ((b0 & 0xE0) == 0xC0) n = 2, c = b0 & 0x1F, min = 0x80;
+        else if ((b0 & 0xF0) == 0xE0) n = 3, c = b0 & 0x0F, min = 0x800;
+        else if ((b0 & 0xF8) == 0xF0) n = 4, c = b0 & 0x07, min = 0x10000;
+        else return i;
+        if (i + n > text.size()) return i;
+        for (std::size_t k = 1; k < n; ++k) {
+          const auto b = static_cast<unsigned char>(text[i + k]);
+          if ((b & 0xC0) != 0x80) return i;  // the sequence is named by its first byte
+          c = (c << 6) | (b & 0x3F);
+        }
+        if (c < min || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return i;
+      }
+      i += n;
+    }
+    return std::string_view::npos;
+  };
+  const std::size_t at = bad_at();
+  if (at == std::string_view::npos) return {};
+  // The key: the last "key =" at or before the bad line, under the last [table] header.
+  std::string key, table;
+  std::size_t pos = 0;
+  while (pos <= at) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view l = text.substr(pos, eol - pos);
+    const std::size_t b = l.find_first_not_of(" \t");
+    if (b != std::string_view::npos) {
+      l.remove_prefix(b);
+      if (l[0] == '[') {
+        const std::size_t e = l.find(']');
+        std::string_view h = l.substr(0, e == std::string_view::npos ? l.size() : e);
+        while (!h.empty() && (h[0] == '[' || h[0] == ' ')) h.remove_prefix(1);
+        table = std::string(h);
+        key.clear();
+      } else if (l[0] != '#') {
+        const std::size_t eq = l.find('=');
+        if (eq != std::string_view::npos && pos + b + eq < at) {
+          std::string_view k = l.substr(0, eq);
+          while (!k.empty() && (k.back() == ' ' || k.back() == '\t')) k.remove_suffix(1);
+          if (k.find_first_of("\"'") == std::string_view::npos) key = std::string(k);
+        }
+      }
+    }
+    pos = eol + 1;
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "invalid UTF-8 (byte 0x%02X at column %zu)", static_cast<unsigned>(static_cast<unsigned char>(text[at])),
+                at - line_start + 1);
+  const std::string name = key.empty() ? table : table.empty() ? key : table + "." + key;
+  return file + ":" + std::to_string(line) + ": " + (name.empty() ? "" : name + ": ") + buf;
+}
+
 std::string line_of(const std::string& file, const toml::source_region& where) {
   if (where.begin.line == 0) return file;
   return file + ":" + std::to_string(where.begin.line);
@@ -316,7 +380,12 @@ Font TableReader::font(Font f, std::string_view size_key, std::string_view color
   f.size = positive(size_key, f.size);
   f.color = color(color_key, f.color);
   f.bold = boolean("bold", f.bold);
+  if (node("font_family")) f.family = font_family("font_family", render::FontFamily::Sans);
   return f;
+}
+
+render::FontFamily TableReader::font_family(std::string_view key, render::FontFamily fallback) {
+  return static_cast<render::FontFamily>(choice(key, {"sans", "serif", "mono"}, static_cast<int>(fallback)));
 }
 
 TextAnchor TableReader::anchor(TextAnchor a) {
