@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 namespace splinefig::figures::detail {
 
@@ -64,21 +65,41 @@ std::string utf8_problem(std::string_view text, const std::string& file) {
   };
   const std::size_t at = bad_at();
   if (at == std::string_view::npos) return {};
-  // The key: the last "key =" at or before the bad line, under the last [table] header.
+  // The key: the last "key =" at or before the bad line, under the last [table] header, named
+  // as the reader names it ([[axes]] then [[axes.series]]: "axes[0].series[0]").
   std::string key, table;
+  std::map<std::string, int> arrays;  // array-of-tables name -> index of its current table
   std::size_t pos = 0;
   while (pos <= at) {
     std::size_t eol = text.find('\n', pos);
     if (eol == std::string_view::npos) eol = text.size();
     std::string_view l = text.substr(pos, eol - pos);
     const std::size_t b = l.find_first_not_of(" \t");
-    if (b != std::string_view::npos) {
+    if (b != std::string_view::npos && pos + b < at) {
       l.remove_prefix(b);
       if (l[0] == '[') {
-        const std::size_t e = l.find(']');
-        std::string_view h = l.substr(0, e == std::string_view::npos ? l.size() : e);
-        while (!h.empty() && (h[0] == '[' || h[0] == ' ')) h.remove_prefix(1);
-        table = std::string(h);
+        const bool array = l.size() > 1 && l[1] == '[';
+        std::string_view h = l.substr(array ? 2 : 1);
+        h = h.substr(0, std::min(h.find(']'), h.size()));
+        while (!h.empty() && h.front() == ' ') h.remove_prefix(1);
+        while (!h.empty() && h.back() == ' ') h.remove_suffix(1);
+        const std::string name(h);
+        if (array) {
+          for (auto it = arrays.begin(); it != arrays.end();)  // a new parent table restarts its children
+            it = it->first.rfind(name + ".", 0) == 0 ? arrays.erase(it) : std::next(it);
+          auto [it, fresh] = arrays.emplace(name, 0);
+          if (!fresh) ++it->second;
+        }
+        table.clear();
+        std::size_t start = 0;
+        for (;;) {
+          const std::size_t dot = name.find('.', start);
+          const std::string prefix = name.substr(0, dot);
+          table += (table.empty() ? "" : ".") + name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+          if (auto it = arrays.find(prefix); it != arrays.end()) table += "[" + std::to_string(it->second) + "]";
+          if (dot == std::string::npos) break;
+          start = dot + 1;
+        }
         key.clear();
       } else if (l[0] != '#') {
         const std::size_t eq = l.find('=');
