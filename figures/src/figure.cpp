@@ -2,6 +2,7 @@
 #include <splinefig/figures/figure.hpp>
 
 #include "plot.hpp"
+#include "rich_text.hpp"
 
 #include <splinefig/spline/kernel.hpp>
 
@@ -90,7 +91,7 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, double scale, Painter
 FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   FigureInfo info;
   info.name = spec.name;
-  info.title = spec.title;
+  info.title = plain_text(spec.title);  // index.json and the gallery show it as plain text
   info.caption = spec.caption;
   info.width = static_cast<int>(std::round(spec.canvas.width * scale));
   info.height = static_cast<int>(std::round(spec.canvas.height * scale));

@@ -211,9 +211,39 @@ std::string markup_problem(const std::string& markup) {
   return error;
 }
 
+namespace {
+// A sub- or superscript piece as Unicode sub/superscript characters, if all of it has one.
+bool scripted(const std::string& s, bool sup, std::string& out) {
+  static const char* const sub_digits[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
+  static const char* const sup_digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string r;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c >= '0' && c <= '9') r += (sup ? sup_digits : sub_digits)[c - '0'];
+    else if (c == '+') r += sup ? "⁺" : "₊";
+    else if (c == '-' ) r += sup ? "⁻" : "₋";
+    else if (s.compare(i, 3, "\u2212") == 0) r += sup ? "⁻" : "₋", i += 2;
+    else if (!sup && c == 'i') r += "ᵢ";
+    else if (!sup && c == 'k') r += "ₖ";
+    else if (!sup && c == 'n') r += "ₙ";
+    else if (!sup && c == 'a') r += "ₐ";
+    else if (sup && c == 'n') r += "ⁿ";
+    else if (sup && c == 'k') r += "ᵏ";
+    else return false;
+  }
+  out += r;
+  return true;
+}
+}  // namespace
+
 std::string plain_text(const std::string& markup) {
   std::string out;
-  for (const Piece& p : Parser(markup, nullptr).run()) out += p.text;
+  for (const Piece& p : Parser(markup, nullptr).run()) {
+    if (p.level == 0 || !scripted(p.text, p.level > 0, out)) {
+      if (p.level != 0) out += p.level > 0 ? "^" : "_";
+      out += p.text;
+    }
+  }
   return out;
 }
 

@@ -45,7 +45,9 @@ std::string markup_problem(const std::string& markup);
 // The UTF-8 character of a TeX name without its backslash ("beta" -> "β"); empty if unknown.
 std::string tex_symbol(std::string_view name);
 
-// The label with its markup resolved to plain UTF-8 (for index.json, alt texts, searches).
+// The label with its markup resolved to plain UTF-8 (for index.json, the gallery, searches):
+// sub- and superscripts as Unicode sub/superscript characters where they all have one
+// ("$b_1$" -> "b₁", "10^{-3}" -> "10⁻³"), else written "_x" / "^x".
 std::string plain_text(const std::string& markup);
 
 }  // namespace splinefig::figures::detail

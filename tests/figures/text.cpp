@@ -67,6 +67,9 @@ TEST_CASE("markup: TeX names, $...$ math with italic variables and a true minus,
         "\xe2\x89\x88");
   CHECK(sfd::plain_text("$\\alpha x$") == "\xce\xb1 x");
   CHECK(sfd::plain_text("$\\alpha{}x$") == "\xce\xb1x");
+  // As plain text (index.json, the gallery): Unicode sub- and superscripts where they exist.
+  CHECK(sfd::plain_text("bias $b_1$ = 0.2 \u2026 5") == "bias b\u2081 = 0.2 \u2026 5");
+  CHECK(sfd::plain_text("$10^{-3}$, x^2, S_i, f_{xy}") == "10\u207b\u00b3, x\u00b2, S\u1d62, f_xy");
   // UTF-8 passes through unchanged.
   CHECK(sfd::plain_text("\xce\xb2\xe2\x82\x81 = 0.2 \xe2\x88\x92 \xce\xb1") == "\xce\xb2\xe2\x82\x81 = 0.2 \xe2\x88\x92 \xce\xb1");
 }
