@@ -17,6 +17,8 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace sr = splinefig::render;
 
@@ -277,4 +279,25 @@ TEST_CASE("text: text_path is the outline Scene::text fills, turned by angle abo
     s.fill_polygon(flat.flatten(1e-4).contours, sr::FillRule::NonZero, {1, 1, 1, 1});
   });
   CHECK(testutil::compare(text, poly).max < 1e-6);
+}
+
+TEST_CASE("text: scenes drawn on several threads at once give the bytes of one drawn alone") {
+  // The font caches are shared by every scene: their first use from several threads at once
+  // (faces loaded, strings shaped, outlines read) must neither race nor change a pixel.
+  auto draw = [](int k) {
+    sr::Scene s(160, 60);
+    sr::TextStyle st;
+    st.size = 11 + k;
+    st.family = static_cast<sr::FontFamily>(k % 3);
+    st.italic = k % 2 == 1;
+    s.text("Thread " + std::to_string(k) + " \xce\xb1\xce\xb2\xce\xb3 \xe2\x88\x9e", {4.5, 30.25}, st);
+    return sr::rasterize(s, 1).pixels;
+  };
+  std::vector<decltype(draw(0))> together(6);
+  {
+    std::vector<std::thread> pool;
+    for (int k = 0; k < 6; ++k) pool.emplace_back([&, k] { together[static_cast<std::size_t>(k)] = draw(k); });
+    for (auto& t : pool) t.join();
+  }
+  for (int k = 0; k < 6; ++k) CHECK(together[static_cast<std::size_t>(k)] == draw(k));
 }
