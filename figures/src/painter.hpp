@@ -42,8 +42,9 @@ struct MarkerOp {
 struct TextOp {
   std::string text;
   Vec2 at;
-  Font font;
+  Font font;  // its family resolved
   TextAnchor anchor;
+  double angle;  // degrees, counter-clockwise, about `at`
 };
 struct ImageOp {
   Raster raster;
@@ -53,7 +54,8 @@ using Op = std::variant<StrokeOp, PathStrokeOp, FillOp, CircleOp, MarkerOp, Text
 
 class Painter {
  public:
-  explicit Painter(double scale) : scale_(scale) {}
+  explicit Painter(double scale, render::FontFamily family = render::FontFamily::Sans)
+      : scale_(scale), family_(family) {}
   double scale() const { return scale_; }
 
   void stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c);
@@ -61,7 +63,9 @@ class Painter {
   void fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c);
   void circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke);
   void marker(render::Marker shape, Vec2 centre, double size, Color c);
-  void text(std::string s, Vec2 at, const Font& f, TextAnchor a);
+  // A label (rich_text.hpp markup), aligned about `at` as a whole, then turned by `angle`
+  // degrees counter-clockwise about `at` (90: reads upwards).
+  void text(std::string s, Vec2 at, const Font& f, TextAnchor a, double angle = 0);
   void image(Raster r, double x0, double y0, double x1, double y1);
 
   // Extent of a label (rich_text.hpp markup) in layout units, measured at 1x.
@@ -70,15 +74,17 @@ class Painter {
   const std::vector<Op>& ops() const { return ops_; }
 
  private:
+  Font resolved(const Font& f) const;
+
   double scale_;
+  render::FontFamily family_;
   std::vector<Op> ops_;
-  mutable std::map<std::tuple<std::string, double, bool>, render::TextExtent> cache_;
+  mutable std::map<std::tuple<std::string, double, bool, int>, render::TextExtent> cache_;
 };
 
 // Width and height of a raster in its own pixels (reads the file header if needed).
 Vec2 raster_size(const Raster& r);
 
-render::TextStyle text_style(const Font& f, TextAnchor a, double scale);
 
 // The display list at the painter's scale as a scene of the given size (pixels).
 render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter);
