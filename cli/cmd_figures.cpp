@@ -148,7 +148,7 @@ int run(const FiguresArgs& a) {
       index = fig::merge_index(kept, done, specs, a.out);
     }
     fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
-    fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index));
+    fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index, {SPLINEFIG_VERSION, options.date}));
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
