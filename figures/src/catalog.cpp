@@ -253,7 +253,7 @@ void figure_html(std::ostringstream& o, const FigureInfo& f) {
     << html_escape(shown) << "\"><img src=\"" << html_escape(shown) << "\"";
   // The vector file is the sharp source on high-density screens; a 1:1 figure keeps its pixels.
   if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << html_escape(png) << " 1x, " << html_escape(svg) << " 2x\"";
-  o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << title << "\" loading=\"lazy\"></a></div>\n"
+  o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << title << "\"></a></div>\n"
     << "  <figcaption><b>" << title << "</b> " << markup_html(f.caption) << "\n    <span class=\"files\">";
   for (const auto& file : f.files) {
     const auto dot = file.find_last_of('.');
