@@ -1,4 +1,4 @@
-// `splinefig figures [--out DIR] [--only NAME...] [--format png,exr] [--scale S]`: renders
+// `splinefig figures [--out DIR] [--only NAME...] [--format png,exr,svg,pdf] [--scale S] [--dpi N]`: renders
 // every built-in figure spec (figures/specs), then index.json and the gallery index.html.
 // With --only, the index keeps the entries of the figures that were not rendered again.
 // The index is written only after every image of the run: a figure that fails keeps its
@@ -7,6 +7,7 @@
 
 #include <splinefig/figures/batch.hpp>
 #include <splinefig/figures/catalog.hpp>
+#include <splinefig/figures/output.hpp>
 #include <splinefig/version.hpp>
 
 #include <algorithm>
@@ -32,6 +33,7 @@ struct FiguresArgs {
   std::vector<std::string> only;
   std::string format = "png";
   double scale = 1;
+  double dpi = 0;
   int threads = 0;
   std::string specs;
 };
@@ -56,9 +58,11 @@ fig::BatchOptions batch_options(const FiguresArgs& a) {
   o.scale = a.scale;
   o.threads = splinefig::cli::check_threads(a.threads);
   o.software = std::string("splinefig ") + SPLINEFIG_VERSION;
+  o.dpi = splinefig::cli::check_dpi(a.dpi);
+  o.date = fig::source_date_epoch();
   o.formats.clear();
   for (const auto& f : split(a.format)) {
-    if (f != "png" && f != "exr") throw Failure("--format " + a.format + ": \"" + f + "\" is not png or exr");
+    if (!fig::is_figure_format(f)) throw Failure("--format " + a.format + ": \"" + f + "\" is not png, exr, svg or pdf");
     if (std::find(o.formats.begin(), o.formats.end(), f) == o.formats.end()) o.formats.push_back(f);
   }
   return o;
@@ -144,7 +148,7 @@ int run(const FiguresArgs& a) {
       index = fig::merge_index(kept, done, specs, a.out);
     }
     fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
-    fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index));
+    fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index, {SPLINEFIG_VERSION, options.date}));
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
@@ -160,8 +164,9 @@ const splinefig::cli::Registration reg{
       app.add_option("--out", a->out, "Output directory (default out/figures)");
       app.add_option("--only", a->only, "Only these figures (names as in figures/specs; repeat or comma-separate)")
           ->delimiter(',');
-      app.add_option("--format", a->format, "Comma-separated: png, exr (default png)");
+      app.add_option("--format", a->format, "Comma-separated: png, exr, svg, pdf (default png)");
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1; 2 for print)");
+      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the files (PNG pHYs, EXR, PDF page and SVG size)");
       app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
       app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones");
       return splinefig::cli::Runner([a] { return run(*a); });

@@ -1,8 +1,9 @@
-// `splinefig render SPEC.toml -o OUT.(png|exr) [--scale S] [--threads N]`: one figure spec
-// (docs/spec.md) rendered to one image.
+// `splinefig render SPEC.toml -o OUT.(png|exr|svg|pdf) [--scale S] [--dpi N] [--threads N]`: one
+// figure spec (docs/spec.md) rendered to one file, the format chosen by the extension.
 #include "command.hpp"
 
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/figures/output.hpp>
 #include <splinefig/image/io.hpp>
 #include <splinefig/version.hpp>
 
@@ -14,6 +15,7 @@ namespace {
 struct RenderArgs {
   std::string spec, out;
   double scale = 1;
+  double dpi = 0;
   int threads = 0;
 };
 
@@ -24,29 +26,39 @@ std::string extension_of(const std::string& path) {
 }
 
 const splinefig::cli::Registration reg{
-    "render", "Render one TOML figure spec to a PNG or EXR image", [](CLI::App& app) {
+    "render", "Render one TOML figure spec to a PNG, EXR, SVG or PDF file", [](CLI::App& app) {
       auto a = std::make_shared<RenderArgs>();
       app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->required();
-      app.add_option("-o,--output", a->out, "Output image: .png (8-bit sRGB) or .exr (float linear)")->required();
+      app.add_option("-o,--output", a->out,
+                     "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves)")
+          ->required();
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1)");
+      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size)");
       app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
       return splinefig::cli::Runner([a] {
         using splinefig::cli::Failure;
         namespace fig = splinefig::figures;
         const std::string ext = extension_of(a->out);
-        if (ext != ".png" && ext != ".exr") throw Failure("-o " + a->out + ": the output must end in .png or .exr");
+        if (ext.size() < 2 || !fig::is_figure_format(ext.substr(1)))
+          throw Failure("-o " + a->out + ": the output must end in .png, .exr, .svg or .pdf");
         if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
         splinefig::cli::check_input_file(a->spec);
         splinefig::cli::check_output_scale(a->scale);
         const int threads = splinefig::cli::check_threads(a->threads);
+        const double dpi = splinefig::cli::check_dpi(a->dpi);
         try {
           fig::FigureSpec spec = fig::load_spec(a->spec);
           fig::check_scaled_canvas(spec, a->scale, "--scale");
-          fig::RenderedFigure r = fig::render_figure(spec, {a->scale, threads});
-          splinefig::WriteOptions w;
+          const fig::FigureScene f = fig::figure_scene(spec, a->scale);
+          fig::FigureFileOptions w;
+          w.scale = a->scale;
+          w.dpi = dpi;
+          w.threads = threads;
           w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
-          w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
-          splinefig::write_image(a->out, r.image, w);
+          w.title = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
+          w.date = fig::source_date_epoch();
+          std::optional<splinefig::Image> raster;
+          fig::write_figure_file(f, a->out, ext.substr(1), w, raster);
         } catch (const fig::SpecFileError& e) {
           throw Failure(e.what());
         }

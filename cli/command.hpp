@@ -100,5 +100,10 @@ inline int check_threads(int threads) {
   if (threads < 0) throw Failure("--threads " + std::to_string(threads) + ": must not be negative");
   return std::min(threads, max_threads);
 }
+// --dpi N: spec pixels per inch, 0 (the default) for none, else in [1, 10000].
+inline double check_dpi(double dpi) {
+  if (dpi != 0 && !(dpi >= 1 && dpi <= 10000)) throw Failure("--dpi " + std::to_string(dpi) + ": must be in [1, 10000]");
+  return dpi;
+}
 
 }  // namespace splinefig::cli

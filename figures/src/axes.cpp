@@ -41,6 +41,12 @@ std::string format_number(double v, int decimals) {
   return s;
 }
 
+std::string tick_number(double v, int decimals) {
+  std::string s = format_number(v, decimals);
+  if (!s.empty() && s[0] == '-') s.replace(0, 1, "\u2212");
+  return s;
+}
+
 double nice_step(double lo, double hi, double target) {
   double span = std::abs(hi - lo);
   target = std::max(target, 1.0);
@@ -69,7 +75,7 @@ std::vector<Tick> nice_ticks(double lo, double hi, double target, double step) {
   for (long long k = k0; k <= k1 && ticks.size() < 1000; ++k) {
     double v = k * step;
     if (std::abs(v) < step * 1e-9) v = 0;
-    ticks.push_back({v, format_number(v, decimals)});
+    ticks.push_back({v, tick_number(v, decimals)});
   }
   return ticks;
 }
@@ -83,7 +89,7 @@ std::vector<Tick> log_ticks(double lo, double hi) {
   std::vector<Tick> ticks;
   for (int k = k0; k <= k1; ++k) {
     if ((k - k0) % every) continue;
-    std::string label = k == 0 ? "1" : k == 1 ? "10" : "10^{" + std::to_string(k) + "}";
+    std::string label = k == 0 ? "1" : k == 1 ? "10" : "10^{" + (k < 0 ? "\u2212" + std::to_string(-k) : std::to_string(k)) + "}";
     ticks.push_back({std::pow(10.0, k), label});
   }
   return ticks;

@@ -1,5 +1,6 @@
 // A pool of figure workers whose results come back in spec order (see batch.hpp).
 #include <splinefig/figures/batch.hpp>
+#include <splinefig/figures/output.hpp>
 #include <splinefig/image/io.hpp>
 
 #include <algorithm>
@@ -29,16 +30,21 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
   try {
     const FigureSpec spec = load_spec(s.path);
     check_scaled_canvas(spec, o.scale, "--scale");
-    RenderedFigure r = render_figure(spec, {o.scale, raster_threads});
-    WriteOptions w;
+    FigureScene fig = figure_scene(spec, o.scale);
+    FigureFileOptions w;
+    w.scale = o.scale;
+    w.dpi = o.dpi;
+    w.threads = raster_threads;
     w.software = o.software;
-    w.description = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
+    w.title = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
+    w.date = o.date;
+    std::optional<Image> raster;
     for (const auto& format : o.formats) {
       const std::string file = s.name + "." + format;
-      write_image((std::filesystem::path(o.out_dir) / file).string(), r.image, w);
-      r.info.files.push_back(file);
+      write_figure_file(fig, (std::filesystem::path(o.out_dir) / file).string(), format, w, raster);
+      fig.info.files.push_back(file);
     }
-    result.info = std::move(r.info);
+    result.info = std::move(fig.info);
   } catch (const std::exception& e) {
     result.error = e.what();
   }

@@ -2,6 +2,8 @@
 #include <splinefig/figures/catalog.hpp>
 #include <splinefig/image/atomic_file.hpp>
 
+#include "rich_text.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -212,40 +215,123 @@ std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, con
   return out;
 }
 
-std::string gallery_html(const std::vector<FigureInfo>& figures) {
+std::string markup_html(const std::string& markup) {
+  if (!detail::markup_problem(markup).empty()) return html_escape(markup);
+  const double size = 10;
+  const detail::RichText rt = detail::set_text(markup, size, [](const std::string& t, double, bool) {
+    return render::TextExtent{static_cast<double>(t.size()), 1, 1};
+  });
+  std::string out;
+  for (const detail::Run& r : rt.runs) {
+    std::string t = html_escape(r.text);
+    if (r.italic) t = "<i>" + t + "</i>";
+    if (r.size < size && r.dy > 0) t = "<sub>" + t + "</sub>";
+    else if (r.size < size && r.dy < 0) t = "<sup>" + t + "</sup>";
+    out += t;
+  }
+  return out;
+}
+
+namespace {
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+std::string file_with(const FigureInfo& f, const std::string& ext) {
+  for (const auto& file : f.files)
+    if (ends_with(file, ext)) return file;
+  return "";
+}
+
+void figure_html(std::ostringstream& o, const FigureInfo& f) {
+  std::string png = file_with(f, ".png"), svg = file_with(f, ".svg");
+  const std::string shown = png.empty() ? (svg.empty() ? (f.files.empty() ? "" : f.files.front()) : svg) : png;
+  const bool natural = f.caption.find("at 1:1") != std::string::npos;
+  const std::string title = html_escape(f.title.empty() ? f.name : f.title);
+  o << "<figure id=\"" << html_escape(f.name) << "\"" << (natural ? " class=\"natural\"" : "") << ">\n  <div class=\"frame\"><a href=\""
+    << html_escape(shown) << "\"><img src=\"" << html_escape(shown) << "\"";
+  // The vector file is the sharp source on high-density screens; a 1:1 figure keeps its pixels.
+  if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << html_escape(png) << " 1x, " << html_escape(svg) << " 2x\"";
+  o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << title << "\"></a></div>\n"
+    << "  <figcaption><b>" << title << "</b> " << markup_html(f.caption) << "\n    <span class=\"files\">";
+  for (const auto& file : f.files) {
+    const auto dot = file.find_last_of('.');
+    std::string label = dot == std::string::npos ? file : file.substr(dot + 1);
+    std::transform(label.begin(), label.end(), label.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    o << "<a href=\"" << html_escape(file) << "\">" << html_escape(label) << "</a>";
+  }
+  o << "<code>" << html_escape(f.name) << "</code></span></figcaption>\n</figure>\n";
+}
+
+}  // namespace
+
+std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOptions& options) {
   std::ostringstream o;
   o << R"(<!DOCTYPE html>
 <html lang="en">
 <head>
 <meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
 <title>splinefig figures</title>
 <style>
-  body { font-family: "DejaVu Sans", sans-serif; color: #222; background: #f4f4f4; margin: 0; padding: 24px; }
-  h1 { font-size: 22px; font-weight: bold; margin: 0 0 20px; }
-  main { display: grid; grid-template-columns: repeat(auto-fill, minmax(420px, 1fr)); gap: 24px; }
-  figure { margin: 0; background: #fff; border: 1px solid #ddd; padding: 12px; }
+  * { box-sizing: border-box; }
+  body { font-family: "DejaVu Sans", sans-serif; color: #1a1a1a; background: #f4f4f4; margin: 0;
+         padding: clamp(8px, 2.5vw, 32px); line-height: 1.45; }
+  header, section, footer { max-width: 1880px; margin: 0 auto; }
+  h1 { font-size: clamp(20px, 3vw, 28px); margin: 0 0 4px; }
+  h2 { font-size: clamp(17px, 2.2vw, 22px); margin: 28px 0 12px; border-bottom: 1px solid #ccc; padding-bottom: 4px; }
+  nav a { margin-right: 14px; color: #1f5f99; }
+  .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, 440px), 1fr)); gap: clamp(10px, 2vw, 24px); }
+  figure { margin: 0; background: #fff; border: 1px solid #ddd; padding: clamp(6px, 1.5vw, 12px); min-width: 0; }
   figure img { width: 100%; height: auto; display: block; }
-  figcaption { font-size: 14px; line-height: 1.4; margin-top: 8px; }
-  figcaption b { display: block; }
-  figcaption code { color: #777; font-size: 12px; }
+  figure.natural { grid-column: 1 / -1; }
+  figure.natural .frame { overflow-x: auto; }
+  figure.natural img { width: auto; max-width: none; image-rendering: pixelated; }
+  figcaption { font-size: 14px; margin-top: 8px; overflow-wrap: anywhere; }
+  figcaption b { display: block; margin-bottom: 2px; }
+  .files { display: block; margin-top: 6px; font-size: 12px; }
+  .files a { margin-right: 10px; color: #1f5f99; }
+  .files code { color: #777; }
+  footer { margin-top: 28px; font-size: 12px; color: #666; }
 </style>
 </head>
 <body>
+<header>
 <h1>splinefig figures</h1>
-<main>
 )";
+  struct Section {
+    const char* id;
+    const char* title;
+    std::vector<const FigureInfo*> figures;
+  };
+  Section sections[3] = {{"memo", "The spline tutorial notes", {}}, {"filters", "Filters", {}},
+                         {"companions", "Companion texts", {}}};
   for (const FigureInfo& f : figures) {
-    std::string png;
-    for (const auto& file : f.files)
-      if (file.size() > 4 && file.substr(file.size() - 4) == ".png") png = file;
-    if (png.empty() && !f.files.empty()) png = f.files.front();
-    o << "<figure id=\"" << html_escape(f.name) << "\">\n  <a href=\"" << html_escape(png) << "\"><img src=\""
-      << html_escape(png) << "\" width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\""
-      << html_escape(f.title.empty() ? f.name : f.title) << "\"></a>\n  <figcaption><b>"
-      << html_escape(f.title.empty() ? f.name : f.title) << "</b>" << html_escape(f.caption) << " <code>"
-      << html_escape(f.name) << "</code></figcaption>\n</figure>\n";
+    const int k = f.name.rfind("filter-", 0) == 0 ? 1 : f.name.rfind("s00", 0) == 0 ? 2 : 0;
+    sections[k].figures.push_back(&f);
   }
-  o << R"(</main>
+  o << "<nav>";
+  for (const Section& s : sections)
+    if (!s.figures.empty()) o << "<a href=\"#" << s.id << "\">" << s.title << "</a>";
+  o << "</nav>\n</header>\n";
+  for (const Section& s : sections) {
+    if (s.figures.empty()) continue;
+    o << "<section id=\"" << s.id << "\">\n<h2>" << s.title << "</h2>\n<div class=\"grid\">\n";
+    for (const FigureInfo* f : s.figures) figure_html(o, *f);
+    o << "</div>\n</section>\n";
+  }
+  o << "<footer>splinefig";
+  if (!options.version.empty()) o << " " << html_escape(options.version);
+  if (options.date >= 0) {
+    const std::time_t t = static_cast<std::time_t>(options.date);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[16];
+    std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
+    o << " &middot; " << buf;
+  }
+  o << R"(</footer>
 <script>
   window.addEventListener("load", function () {
     var ok = true;
@@ -255,6 +341,8 @@ std::string gallery_html(const std::vector<FigureInfo>& figures) {
       ok = ok && loaded;
     });
     document.body.setAttribute("data-images-ok", ok ? "yes" : "no");
+    var wide = document.documentElement.scrollWidth > document.documentElement.clientWidth;
+    document.body.setAttribute("data-overflow", wide ? "yes" : "no");
   });
 </script>
 </body>

@@ -2,6 +2,7 @@
 #include <splinefig/figures/figure.hpp>
 
 #include "plot.hpp"
+#include "rich_text.hpp"
 
 #include <splinefig/spline/kernel.hpp>
 
@@ -90,7 +91,7 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, double scale, Painter
 FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   FigureInfo info;
   info.name = spec.name;
-  info.title = spec.title;
+  info.title = plain_text(spec.title);  // index.json and the gallery show it as plain text
   info.caption = spec.caption;
   info.width = static_cast<int>(std::round(spec.canvas.width * scale));
   info.height = static_cast<int>(std::round(spec.canvas.height * scale));
@@ -99,7 +100,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   const Layout& L = spec.layout;
   double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
-    Font tf{spec.title_size, *render::parse_hex_color("#222222"), true};
+    Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true};
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;
   }
@@ -129,17 +130,23 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
 
 FigureInfo layout_figure(const FigureSpec& spec, double scale) {
   check_scaled_canvas(spec, scale, spec.path);
-  Painter p(scale);
+  Painter p(scale, spec.font_family);
   return build(spec, scale, p);
 }
 
+FigureScene figure_scene(const FigureSpec& spec, double scale) {
+  check_scaled_canvas(spec, scale, spec.path);
+  Painter p(scale, spec.font_family);
+  FigureInfo info = build(spec, scale, p);
+  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, parse_kernel(spec.canvas.filter));
+  return {std::move(scene), std::move(info)};
+}
+
 RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& options) {
-  check_scaled_canvas(spec, options.scale, spec.path);
-  Painter p(options.scale);
+  FigureScene fs = figure_scene(spec, options.scale);
   RenderedFigure out;
-  out.info = build(spec, options.scale, p);
-  out.image = paint(p, out.info.width, out.info.height, spec.canvas.background, parse_kernel(spec.canvas.filter),
-                    options.threads);
+  out.image = render::rasterize(fs.scene, options.threads);
+  out.info = std::move(fs.info);
   return out;
 }
 

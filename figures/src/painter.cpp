@@ -20,6 +20,10 @@ void Painter::stroke(std::vector<Vec2> pts, bool closed, const render::StrokeSty
   if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
   ops_.push_back(StrokeOp{std::move(pts), closed, s, c});
 }
+void Painter::stroke(render::Path path, const render::StrokeStyle& s, Color c) {
+  if (path.empty() || !(s.width > 0) || c.a <= 0) return;
+  ops_.push_back(PathStrokeOp{std::move(path), s, c});
+}
 void Painter::fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c) {
   if (c.a <= 0) return;
   ops_.push_back(FillOp{std::move(contours), rule, c});
@@ -30,40 +34,43 @@ void Painter::circle(Vec2 centre, double r, std::optional<Color> fill, std::opti
 void Painter::marker(render::Marker shape, Vec2 centre, double size, Color c) {
   ops_.push_back(MarkerOp{shape, centre, size, c});
 }
-void Painter::text(std::string s, Vec2 at, const Font& f, TextAnchor a) {
+Font Painter::resolved(const Font& f) const {
+  Font r = f;
+  if (!r.family) r.family = family_;
+  return r;
+}
+void Painter::text(std::string s, Vec2 at, const Font& f, TextAnchor a, double angle) {
   if (s.empty()) return;
-  ops_.push_back(TextOp{std::move(s), at, f, a});
+  ops_.push_back(TextOp{std::move(s), at, resolved(f), a, angle});
 }
 void Painter::image(Raster r, double x0, double y0, double x1, double y1) {
   ops_.push_back(ImageOp{std::move(r), x0, y0, x1, y1});
 }
 
-render::TextStyle text_style(const Font& f, TextAnchor a, double scale) {
+namespace {
+
+render::TextStyle plain_style(double size, const Font& f, bool italic) {
   render::TextStyle t;
-  t.size = f.size * scale;
+  t.size = size;
   t.color = f.color;
-  t.halign = a.halign;
-  t.valign = a.valign;
-  t.font = f.bold ? "DejaVuSans-Bold" : "DejaVuSans";
+  t.weight = f.bold ? render::FontWeight::Bold : render::FontWeight::Normal;
+  t.family = f.family.value_or(render::FontFamily::Sans);
+  t.italic = italic;
   return t;
 }
 
-namespace {
-
-// Plain-text extent at an output size, in output pixels. FreeType measuring is the
-// costly part of setting a label, and figures repeat their labels, so extents are cached.
-render::TextExtent measure_plain(const std::string& text, double size, bool bold) {
+// Plain-text extent at an output size, in output pixels. Shaping is cached by the renderer;
+// figures repeat their labels, so extents are cached here too.
+render::TextExtent measure_plain(const std::string& text, double size, const Font& f, bool italic) {
   static std::mutex mutex;
-  static std::map<std::tuple<std::string, double, bool>, render::TextExtent> cache;
-  auto key = std::make_tuple(text, size, bold);
+  static std::map<std::tuple<std::string, double, int, int>, render::TextExtent> cache;
+  const int face = static_cast<int>(f.family.value_or(render::FontFamily::Sans)) * 4 + (f.bold ? 2 : 0) + (italic ? 1 : 0);
+  auto key = std::make_tuple(text, size, face, 0);
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (auto it = cache.find(key); it != cache.end()) return it->second;
   }
-  render::TextStyle t;
-  t.size = size;
-  t.font = bold ? "DejaVuSans-Bold" : "DejaVuSans";
-  render::TextExtent e = render::measure_text(text, t);
+  render::TextExtent e = render::measure_text(text, plain_style(size, f, italic));
   std::lock_guard<std::mutex> lock(mutex);
   if (cache.size() > 100000) cache.clear();
   cache[key] = e;
@@ -72,12 +79,13 @@ render::TextExtent measure_plain(const std::string& text, double size, bool bold
 
 }  // namespace
 
-render::TextExtent Painter::measure(const std::string& s, const Font& f) const {
-  auto key = std::make_tuple(s, f.size, f.bold);
+render::TextExtent Painter::measure(const std::string& s, const Font& font) const {
+  const Font f = resolved(font);
+  auto key = std::make_tuple(s, f.size, f.bold, static_cast<int>(*f.family));
   if (auto it = cache_.find(key); it != cache_.end()) return it->second;
   // Measured at 1x whatever the output scale, so that the layout (and every pixel box)
   // scales exactly; drawing aligns each label with its extent at the output size.
-  RichText rt = set_text(s, f.size, [&](const std::string& t, double size) { return measure_plain(t, size, f.bold); });
+  RichText rt = set_text(s, f.size, [&](const std::string& t, double size, bool italic) { return measure_plain(t, size, f, italic); });
   render::TextExtent e{rt.width, rt.ascent, rt.descent};
   cache_[key] = e;
   return e;
@@ -132,27 +140,34 @@ render::StrokeStyle scaled(render::StrokeStyle st, double s) {
   return st;
 }
 
-// A label set as runs (rich_text.hpp), aligned as a whole, each run on the baseline.
+// A label set as runs (rich_text.hpp), aligned as a whole, each run on the baseline, the whole
+// turned about the anchor.
 void draw_text(render::Scene& scene, const TextOp& op, double s) {
-  render::TextStyle style = text_style(op.font, {render::HAlign::Left, render::VAlign::Baseline}, s);
   RichText rt = set_text(op.text, op.font.size * s,
-                         [&](const std::string& t, double size) { return measure_plain(t, size, op.font.bold); });
-  double x = op.at.x * s, y = op.at.y * s;
-  if (op.anchor.halign == render::HAlign::Center) x -= 0.5 * rt.width;
-  else if (op.anchor.halign == render::HAlign::Right) x -= rt.width;
-  if (op.anchor.valign == render::VAlign::Top) y += rt.ascent;
-  else if (op.anchor.valign == render::VAlign::Middle) y += 0.5 * (rt.ascent - rt.descent);
-  else if (op.anchor.valign == render::VAlign::Bottom) y -= rt.descent;
+                         [&](const std::string& t, double size, bool italic) { return measure_plain(t, size, op.font, italic); });
+  double ox = 0, oy = 0;  // the label's pen origin relative to the anchor, in the label's frame
+  if (op.anchor.halign == render::HAlign::Center) ox = -0.5 * rt.width;
+  else if (op.anchor.halign == render::HAlign::Right) ox = -rt.width;
+  if (op.anchor.valign == render::VAlign::Top) oy = rt.ascent;
+  else if (op.anchor.valign == render::VAlign::Middle) oy = 0.5 * (rt.ascent - rt.descent);
+  else if (op.anchor.valign == render::VAlign::Bottom) oy = -rt.descent;
+  const bool upright = op.angle == 0;
+  const double a = op.angle * 3.14159265358979323846 / 180;
+  // Exact for the quarter turns axis labels use.
+  const double c = op.angle == 90 ? 0.0 : std::cos(a), sn = op.angle == 90 ? 1.0 : std::sin(a);
+  const Vec2 at{op.at.x * s, op.at.y * s};
   for (const Run& run : rt.runs) {
-    style.size = run.size;
-    scene.text(run.text, {x + run.dx, y + run.dy}, style);
+    render::TextStyle style = plain_style(run.size, op.font, run.italic);
+    style.angle = op.angle;
+    const double u = ox + run.dx, v = oy + run.dy;
+    const Vec2 p = upright ? Vec2{at.x + u, at.y + v} : Vec2{at.x + c * u + sn * v, at.y - sn * u + c * v};
+    scene.text(run.text, p, style);
   }
 }
 
 }  // namespace
 
-Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,
-            int threads) {
+render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter) {
   const double s = p.scale();
   render::Scene scene(width, height, background, filter);
   for (const Op& op : p.ops()) {
@@ -162,6 +177,8 @@ Image paint(const Painter& p, int width, int height, Color background, const Ker
           if constexpr (std::is_same_v<T, StrokeOp>) {
             auto pts = scaled(o.points, s);
             scene.stroke_polyline(pts, o.closed, scaled(o.style, s), o.color);
+          } else if constexpr (std::is_same_v<T, PathStrokeOp>) {
+            scene.stroke_path(o.path.transformed(s, 0, 0, s, 0, 0), scaled(o.style, s), o.color);
           } else if constexpr (std::is_same_v<T, FillOp>) {
             std::vector<std::vector<Vec2>> c;
             for (const auto& contour : o.contours) c.push_back(scaled(contour, s));
@@ -181,7 +198,7 @@ Image paint(const Painter& p, int width, int height, Color background, const Ker
         },
         op);
   }
-  return render::rasterize(scene, threads);
+  return scene;
 }
 
 }  // namespace splinefig::figures::detail

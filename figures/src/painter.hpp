@@ -2,6 +2,7 @@
 // Internal: a display list in layout units (1x pixels) that is scaled to the output size
 // when it becomes one renderer scene; raster images are scene items like the rest.
 #include <splinefig/figures/spec.hpp>
+#include <splinefig/renderer/path.hpp>
 
 #include <map>
 #include <tuple>
@@ -13,6 +14,11 @@ namespace splinefig::figures::detail {
 struct StrokeOp {
   std::vector<Vec2> points;
   bool closed;
+  render::StrokeStyle style;
+  Color color;
+};
+struct PathStrokeOp {  // exact curves: lines and Beziers
+  render::Path path;
   render::StrokeStyle style;
   Color color;
 };
@@ -36,25 +42,30 @@ struct MarkerOp {
 struct TextOp {
   std::string text;
   Vec2 at;
-  Font font;
+  Font font;  // its family resolved
   TextAnchor anchor;
+  double angle;  // degrees, counter-clockwise, about `at`
 };
 struct ImageOp {
   Raster raster;
   double x0, y0, x1, y1;  // target rectangle in layout units
 };
-using Op = std::variant<StrokeOp, FillOp, CircleOp, MarkerOp, TextOp, ImageOp>;
+using Op = std::variant<StrokeOp, PathStrokeOp, FillOp, CircleOp, MarkerOp, TextOp, ImageOp>;
 
 class Painter {
  public:
-  explicit Painter(double scale) : scale_(scale) {}
+  explicit Painter(double scale, render::FontFamily family = render::FontFamily::Sans)
+      : scale_(scale), family_(family) {}
   double scale() const { return scale_; }
 
   void stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c);
+  void stroke(render::Path path, const render::StrokeStyle& s, Color c);
   void fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c);
   void circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke);
   void marker(render::Marker shape, Vec2 centre, double size, Color c);
-  void text(std::string s, Vec2 at, const Font& f, TextAnchor a);
+  // A label (rich_text.hpp markup), aligned about `at` as a whole, then turned by `angle`
+  // degrees counter-clockwise about `at` (90: reads upwards).
+  void text(std::string s, Vec2 at, const Font& f, TextAnchor a, double angle = 0);
   void image(Raster r, double x0, double y0, double x1, double y1);
 
   // Extent of a label (rich_text.hpp markup) in layout units, measured at 1x.
@@ -63,18 +74,19 @@ class Painter {
   const std::vector<Op>& ops() const { return ops_; }
 
  private:
+  Font resolved(const Font& f) const;
+
   double scale_;
+  render::FontFamily family_;
   std::vector<Op> ops_;
-  mutable std::map<std::tuple<std::string, double, bool>, render::TextExtent> cache_;
+  mutable std::map<std::tuple<std::string, double, bool, int>, render::TextExtent> cache_;
 };
 
 // Width and height of a raster in its own pixels (reads the file header if needed).
 Vec2 raster_size(const Raster& r);
 
-render::TextStyle text_style(const Font& f, TextAnchor a, double scale);
 
-// Renders the display list at the painter's scale onto a canvas of the given size (pixels).
-Image paint(const Painter& p, int width, int height, Color background, const Kernel& filter,
-                    int threads);
+// The display list at the painter's scale as a scene of the given size (pixels).
+render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter);
 
 }  // namespace splinefig::figures::detail

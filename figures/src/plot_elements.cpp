@@ -58,6 +58,12 @@ void stroke_clipped(Painter& p, const std::vector<Vec2>& pts, bool closed, const
   for (auto& r : runs) p.stroke(std::move(r), false, st, c);
 }
 
+// Whether every control point of the path lies in the clip box: then so does the curve (a
+// Bezier lies in the convex hull of its control points) and it needs no clipping.
+bool inside(const render::Path& path, const Rect& clip) {
+  return std::all_of(path.points().begin(), path.points().end(), [&](Vec2 q) { return clip.contains(q); });
+}
+
 // What every element's drawing shares: the panel, the painter, the occupancy grid, the
 // palette and what the legend, the index and the inline labels collect.
 class ElementPainter {
@@ -109,6 +115,15 @@ class ElementPainter {
     stroke_clipped(p, pts, closed, st, c, clip);
     occ.mark_polyline(pts, 0.5 * st.width + 1);
   }
+  // The exact path when it needs no clipping, else the polyline `pts` of the same curve.
+  void stroke(const std::optional<render::Path>& path, const std::vector<Vec2>& pts, bool closed,
+              const render::StrokeStyle& st, Color c) {
+    if (!path || !inside(*path, clip)) return stroke(pts, closed, st, c);
+    render::Path closed_path = *path;
+    if (closed) closed_path.close();
+    p.stroke(std::move(closed_path), st, c);
+    occ.mark_polyline(pts, 0.5 * st.width + 1);
+  }
   // A marker inside the clip box, marked as used.
   void mark(render::Marker shape, Vec2 q, double size, Color c) {
     if (!clip.contains(q)) return;
@@ -144,7 +159,7 @@ void draw_curve(const CurveElement& c, const Curve& curve, ElementPainter& d) {
   const Color color = d.pick(c.color);
   const bool closed = c.ends == Ends::closed;
   if (closed && pts.size() > 2) pts.pop_back();
-  d.stroke(pts, closed, c.stroke, color);
+  d.stroke(curve_path(curve, d.map), pts, closed, c.stroke, color);
   if (c.show_knots)
     for (Vec2 k : c.knots) {
       Vec2 q = d.map(k);
@@ -181,11 +196,37 @@ void draw_kernel(const KernelElement& k, ElementPainter& d) {
     for (Vec2 q : piece)
       if (all.empty() || q.x != all.back().x || q.y != all.back().y) all.push_back(q);
   Color color = k.piece_colors.empty() ? d.pick(k.color) : k.piece_colors.back();
+  // The exact pieces when none needs clipping, else the polylines.
+  auto paths = kernel_paths(k.basis, s0, s1, k.scale, d.map);
+  if (paths && !std::all_of(paths->begin(), paths->end(), [&](const render::Path& q) { return inside(q, d.clip); }))
+    paths.reset();
   if (k.piece_colors.empty()) {
-    stroke_clipped(d.p, all, false, k.stroke, color, d.clip);
+    if (paths) {
+      render::Path whole;
+      for (const render::Path& q : *paths) {
+        std::size_t j = 0;
+        for (render::Path::Verb v : q.verbs()) {
+          const auto& pt = q.points();
+          if (v == render::Path::Verb::Cubic) {
+            whole.cubic_to(pt[j], pt[j + 1], pt[j + 2]);
+            j += 3;
+            continue;
+          }
+          const Vec2 to = pt[j++];
+          if (whole.empty()) whole.move_to(to);
+          else if (const Vec2 cur = whole.points().back(); cur.x != to.x || cur.y != to.y) whole.line_to(to);
+        }
+      }
+      d.p.stroke(std::move(whole), k.stroke, color);
+    } else {
+      stroke_clipped(d.p, all, false, k.stroke, color, d.clip);
+    }
   } else {
-    for (size_t i = 0; i < pieces.size(); ++i)
-      if (!pieces[i].empty()) stroke_clipped(d.p, pieces[i], false, k.stroke, k.piece_colors[i], d.clip);
+    for (size_t i = 0; i < pieces.size(); ++i) {
+      if (pieces[i].empty()) continue;
+      if (paths) d.p.stroke((*paths)[i], k.stroke, k.piece_colors[i]);
+      else stroke_clipped(d.p, pieces[i], false, k.stroke, k.piece_colors[i], d.clip);
+    }
   }
   d.occ.mark_polyline(all, 0.5 * k.stroke.width + 1);
   if (k.show_knots)

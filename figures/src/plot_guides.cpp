@@ -74,7 +74,12 @@ void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter
     double y = cell.bottom;
     p.text(ax.x.label, {0.5 * (b.left + b.right), y}, g.label_font, {render::HAlign::Center, render::VAlign::Bottom});
   }
-  if (!ax.y.label.empty()) {
+  if (!ax.y.label.empty() && ax.y.label_rotated) {
+    // Turned a quarter to read upwards, centred on the box, its ink starting at the cell's
+    // left edge (the layout keeps that strip free).
+    p.text(ax.y.label, {cell.left, 0.5 * (b.top + b.bottom)}, g.label_font, {render::HAlign::Center, render::VAlign::Top},
+           90);
+  } else if (!ax.y.label.empty()) {
     p.text(ax.y.label, {std::max(cell.left, b.left - 30), b.top - 8}, g.label_font,
            {render::HAlign::Left, render::VAlign::Bottom});
   }

@@ -82,7 +82,7 @@ std::vector<Tick> make_ticks(const AxisSpec& axis, const std::array<double, 2>& 
           double f = w * std::pow(10.0, decimals);
           while (decimals < 6 && std::abs(f - std::round(f)) > 1e-6) ++decimals, f = w * std::pow(10.0, decimals);
         }
-        label = format_number(v, decimals);
+        label = tick_number(v, decimals);
       }
       t.push_back({v, label});
     }
@@ -125,6 +125,12 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
   const bool guides = ax.frame != Frame::None;
   const render::TextExtent digit = p.measure("0", g.tick_font);
   const double tick_h = digit.ascent + digit.descent;
+  // A rotated y label takes a strip at the left: its ink height and a gap.
+  double ylabel_h = 0;
+  if (!ax.y.label.empty() && ax.y.label_rotated) {
+    const render::TextExtent e = p.measure(ax.y.label, g.label_font);
+    ylabel_h = e.ascent + e.descent + 8;
+  }
   Panel panel;
   Rect box = cell;
   if (ax.box) {
@@ -142,10 +148,11 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
       for (const auto& t : panel.y_ticks) ylabel_w = std::max(ylabel_w, p.measure(t.label, g.tick_font).width);
       if (!panel.x_ticks.empty()) xlabel_last = p.measure(panel.x_ticks.back().label, g.tick_font).width;
     }
-    double top = cell.top + (ax.title.empty() ? 0 : g.title_font.size + 12) + (ax.y.label.empty() ? 0 : g.label_font.size + 10);
+    const bool ylabel_above = !ax.y.label.empty() && !ax.y.label_rotated;
+    double top = cell.top + (ax.title.empty() ? 0 : g.title_font.size + 12) + (ylabel_above ? g.label_font.size + 10 : 0);
     top = std::max(top, cell.top + (guides ? 0.5 * tick_h + 2 : 0));
     double bottom = cell.bottom - (guides ? g.tick_length + 4 + tick_h + 2 : 0) - (ax.x.label.empty() ? 0 : g.label_font.size + 10);
-    double left = cell.left + (guides ? ylabel_w + g.tick_length + 6 : 0);
+    double left = cell.left + (guides ? ylabel_w + g.tick_length + 6 : 0) + ylabel_h;
     double right = cell.right - (guides ? std::max(4.0, 0.5 * xlabel_last) : 0);
     box = {std::round(left), std::round(top), std::round(right), std::round(bottom)};
     if (box.width() < 10 || box.height() < 10) box = cell;

@@ -1,6 +1,7 @@
 // Adaptive sampling of spline pieces into pixel polylines (see sampling.hpp).
 #include <splinefig/figures/sampling.hpp>
 
+#include <splinefig/spline/bezier_form.hpp>
 #include <splinefig/spline/segment.hpp>
 
 #include <algorithm>
@@ -157,6 +158,89 @@ std::vector<std::vector<Vec2>> sample_kernel(const Basis& b, double s0, double s
   }
   if (s1 > sup.hi && last != pieces.rend()) last->push_back(map({s1, 0.0}));
   else if (s1 > sup.hi && s0 >= sup.hi) pieces.back() = {map({s0, 0.0}), map({s1, 0.0})};
+  return pieces;
+}
+
+namespace {
+
+// Appends a Bezier of degree 1..3 (control points in data space, 2-D) mapped to pixels; starts
+// a subpath if the path is empty, joins with a line if the piece starts elsewhere.
+void append_bezier(render::Path& path, const Points& bz, const PixelMap& map) {
+  const int n = static_cast<int>(bz.size()) - 1;
+  auto at = [&](int k) { return map(Vec2{bz.coords[2 * k], bz.coords[2 * k + 1]}); };
+  const Vec2 p0 = at(0);
+  // Pieces of a continuous spline meet up to rounding (1e-13 px): no joining line for that.
+  if (path.empty()) path.move_to(p0);
+  else if (const Vec2 cur = path.points().back(); std::hypot(cur.x - p0.x, cur.y - p0.y) > 1e-9) path.line_to(p0);
+  if (n == 1) path.line_to(at(1));
+  else if (n == 2) path.quad_to(at(1), at(2));
+  else path.cubic_to(at(1), at(2), at(3));
+}
+
+void append_line(render::Path& path, Vec2 a, Vec2 b) {
+  if (path.empty()) path.move_to(a);
+  else if (const Vec2 cur = path.points().back(); cur.x != a.x || cur.y != a.y) path.line_to(a);
+  path.line_to(b);
+}
+
+}  // namespace
+
+std::optional<render::Path> curve_path(const Curve& c, const PixelMap& map) {
+  if (!map.affine() || c.degree() < 1 || c.degree() > 3 || c.segments() == 0) return std::nullopt;
+  render::Path path;
+  Points xy(2, static_cast<std::size_t>(c.degree() + 1));
+  for (std::size_t i = 0; i < c.segments(); ++i) {
+    const Points bz = piece_bezier(c, i);
+    for (std::size_t k = 0; k < bz.size(); ++k) {
+      xy.coords[2 * k] = bz.coords[k * static_cast<std::size_t>(c.dim())];
+      xy.coords[2 * k + 1] = c.dim() > 1 ? bz.coords[k * static_cast<std::size_t>(c.dim()) + 1] : 0;
+    }
+    append_bezier(path, xy, map);
+  }
+  return path;
+}
+
+std::optional<std::vector<render::Path>> kernel_paths(const Basis& b, double s0, double s1, double scale,
+                                                      const PixelMap& map) {
+  const int n = b.degree;
+  if (!map.affine() || n < 1 || n > 3) return std::nullopt;
+  Support sup = kernel_support(b);
+  std::vector<render::Path> pieces(static_cast<size_t>(n + 1));
+  for (int p = 0; p <= n; ++p) {
+    double left = sup.lo + p;
+    double u0 = std::max(0.0, s0 - left), u1 = std::min(1.0, s1 - left);
+    if (!(u0 < u1)) continue;
+    append_bezier(pieces[p], kernel_piece_bezier(b, p, u0, u1, scale), map);
+  }
+  // Zero outside the support, joined to the first and last piece as sample_kernel does.
+  auto first = std::find_if(pieces.begin(), pieces.end(), [](const auto& v) { return !v.empty(); });
+  auto last = std::find_if(pieces.rbegin(), pieces.rend(), [](const auto& v) { return !v.empty(); });
+  if (s0 < sup.lo) {
+    render::Path zero;
+    append_line(zero, map({s0, 0.0}), map({std::min(sup.lo, s1), 0.0}));
+    if (first != pieces.end()) {
+      const render::Path rest = *first;
+      *first = zero;
+      std::size_t k = 0;
+      for (render::Path::Verb v : rest.verbs()) {
+        const auto& q = rest.points();
+        if (v == render::Path::Verb::Move) {
+          const Vec2 cur = first->points().back();
+          if (cur.x != q[k].x || cur.y != q[k].y) first->line_to(q[k]);
+          ++k;
+        }
+        else if (v == render::Path::Verb::Line) first->line_to(q[k]), ++k;
+        else if (v == render::Path::Verb::Cubic) first->cubic_to(q[k], q[k + 1], q[k + 2]), k += 3;
+      }
+    } else {
+      pieces.front() = zero;
+    }
+  }
+  if (s1 > sup.hi && last != pieces.rend()) append_line(*last, last->points().back(), map({s1, 0.0}));
+  else if (s1 > sup.hi && s0 >= sup.hi) {
+    pieces.back() = render::Path();
+    append_line(pieces.back(), map({s0, 0.0}), map({s1, 0.0}));
+  }
   return pieces;
 }
 

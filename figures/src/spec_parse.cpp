@@ -236,6 +236,7 @@ void place_panels(FigureSpec& spec) {
 FigureSpec parse_spec(std::string_view text, const std::string& name, const std::string& base_dir) {
   using namespace detail;
   toml::table doc;
+  if (std::string bad = utf8_problem(text, name); !bad.empty()) throw SpecFileError(bad);
   try {
     doc = toml::parse(text, name);
   } catch (const toml::parse_error& e) {
@@ -252,6 +253,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   spec.caption = r.string("caption", "");
   spec.show_title = r.boolean("show_title", true);
   spec.title_size = r.positive("title_size", spec.title_size);
+  spec.font_family = r.font_family("font_family", spec.font_family);
   r.number("order", 0);  // gallery order (catalog.cpp reads it)
   if (auto t = r.tables("canvas"); !t.empty()) {
     if (t.size() > 1) r.fail("canvas", "only one [canvas] table");

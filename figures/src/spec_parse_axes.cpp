@@ -30,6 +30,7 @@ void parse_axis(TableReader& r, char name, AxisSpec& axis) {
   if (axis.scale == Scale::Log && axis.range && ((*axis.range)[0] <= 0 || (*axis.range)[1] <= 0))
     r.fail(p + "_range", "a log axis needs a positive range");
   axis.label = r.label(p + "_label", "");
+  if (p == "y") axis.label_rotated = r.boolean("y_label_rotated", false);
   if (r.has(p + "_ticks")) {
     const toml::node* n = r.node(p + "_ticks");
     if (auto b = n->as_boolean()) {

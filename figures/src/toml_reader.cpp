@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 namespace splinefig::figures::detail {
 
@@ -33,6 +34,90 @@ const char* type_name(toml::node_type t) {
 }
 
 }  // namespace
+
+std::string utf8_problem(std::string_view text, const std::string& file) {
+  std::size_t i = 0, line = 1, line_start = 0;
+  auto bad_at = [&]() -> std::size_t {  // the offset of the first invalid byte, or npos
+    while (i < text.size()) {
+      const auto b0 = static_cast<unsigned char>(text[i]);
+      if (b0 == '\n') {
+        ++line;
+        line_start = i + 1;
+      }
+      std::size_t n = 1;
+      char32_t c = b0, min = 0;
+      if (b0 >= 0x80) {
+        if ((b0 & 0xE0) == 0xC0) n = 2, c = b0 & 0x1F, min = 0x80;
+        else if ((b0 & 0xF0) == 0xE0) n = 3, c = b0 & 0x0F, min = 0x800;
+        else if ((b0 & 0xF8) == 0xF0) n = 4, c = b0 & 0x07, min = 0x10000;
+        else return i;
+        if (i + n > text.size()) return i;
+        for (std::size_t k = 1; k < n; ++k) {
+          const auto b = static_cast<unsigned char>(text[i + k]);
+          if ((b & 0xC0) != 0x80) return i;  // the sequence is named by its first byte
+          c = (c << 6) | (b & 0x3F);
+        }
+        if (c < min || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return i;
+      }
+      i += n;
+    }
+    return std::string_view::npos;
+  };
+  const std::size_t at = bad_at();
+  if (at == std::string_view::npos) return {};
+  // The key: the last "key =" at or before the bad line, under the last [table] header, named
+  // as the reader names it ([[axes]] then [[axes.series]]: "axes[0].series[0]").
+  std::string key, table;
+  std::map<std::string, int> arrays;  // array-of-tables name -> index of its current table
+  std::size_t pos = 0;
+  while (pos <= at) {
+    std::size_t eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view l = text.substr(pos, eol - pos);
+    const std::size_t b = l.find_first_not_of(" \t");
+    if (b != std::string_view::npos && pos + b < at) {
+      l.remove_prefix(b);
+      if (l[0] == '[') {
+        const bool array = l.size() > 1 && l[1] == '[';
+        std::string_view h = l.substr(array ? 2 : 1);
+        h = h.substr(0, std::min(h.find(']'), h.size()));
+        while (!h.empty() && h.front() == ' ') h.remove_prefix(1);
+        while (!h.empty() && h.back() == ' ') h.remove_suffix(1);
+        const std::string name(h);
+        if (array) {
+          for (auto it = arrays.begin(); it != arrays.end();)  // a new parent table restarts its children
+            it = it->first.rfind(name + ".", 0) == 0 ? arrays.erase(it) : std::next(it);
+          auto [it, fresh] = arrays.emplace(name, 0);
+          if (!fresh) ++it->second;
+        }
+        table.clear();
+        std::size_t start = 0;
+        for (;;) {
+          const std::size_t dot = name.find('.', start);
+          const std::string prefix = name.substr(0, dot);
+          table += (table.empty() ? "" : ".") + name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+          if (auto it = arrays.find(prefix); it != arrays.end()) table += "[" + std::to_string(it->second) + "]";
+          if (dot == std::string::npos) break;
+          start = dot + 1;
+        }
+        key.clear();
+      } else if (l[0] != '#') {
+        const std::size_t eq = l.find('=');
+        if (eq != std::string_view::npos && pos + b + eq < at) {
+          std::string_view k = l.substr(0, eq);
+          while (!k.empty() && (k.back() == ' ' || k.back() == '\t')) k.remove_suffix(1);
+          if (k.find_first_of("\"'") == std::string_view::npos) key = std::string(k);
+        }
+      }
+    }
+    pos = eol + 1;
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "invalid UTF-8 (byte 0x%02X at column %zu)", static_cast<unsigned>(static_cast<unsigned char>(text[at])),
+                at - line_start + 1);
+  const std::string name = key.empty() ? table : table.empty() ? key : table + "." + key;
+  return file + ":" + std::to_string(line) + ": " + (name.empty() ? "" : name + ": ") + buf;
+}
 
 std::string line_of(const std::string& file, const toml::source_region& where) {
   if (where.begin.line == 0) return file;
@@ -316,7 +401,12 @@ Font TableReader::font(Font f, std::string_view size_key, std::string_view color
   f.size = positive(size_key, f.size);
   f.color = color(color_key, f.color);
   f.bold = boolean("bold", f.bold);
+  if (node("font_family")) f.family = font_family("font_family", render::FontFamily::Sans);
   return f;
+}
+
+render::FontFamily TableReader::font_family(std::string_view key, render::FontFamily fallback) {
+  return static_cast<render::FontFamily>(choice(key, {"sans", "serif", "mono"}, static_cast<int>(fallback)));
 }
 
 TextAnchor TableReader::anchor(TextAnchor a) {

@@ -80,6 +80,8 @@ class TableReader {
   // dash_offset. `width` must be >= 0 (0 draws nothing).
   render::StrokeStyle stroke(render::StrokeStyle fallback);
   Font font(Font fallback, std::string_view size_key = "size", std::string_view color_key = "color");
+  // "sans" | "serif" | "mono".
+  render::FontFamily font_family(std::string_view key, render::FontFamily fallback);
   TextAnchor anchor(TextAnchor fallback);
 
  private:
@@ -91,5 +93,10 @@ class TableReader {
 };
 
 std::string line_of(const std::string& file, const toml::source_region& where);
+
+// Checks that a spec's text is valid UTF-8 before it is parsed; on the first invalid byte,
+// "FILE:LINE: KEY: invalid UTF-8 (byte 0xNN at column C)", KEY the dotted key whose value
+// holds it (its table's header and the key on that or an earlier line). Empty when valid.
+std::string utf8_problem(std::string_view text, const std::string& file);
 
 }  // namespace splinefig::figures::detail

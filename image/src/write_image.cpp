@@ -97,6 +97,11 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   auto& text = spec.string_attributes;
   text.emplace_back("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
   if (!options.description.empty()) text.emplace_back("ImageDescription", options.description);
+  if (options.dpi > 0) {  // PNG pHYs, EXR and TIFF resolution attributes
+    spec.float_attributes.emplace_back("XResolution", static_cast<float>(options.dpi));
+    spec.float_attributes.emplace_back("YResolution", static_cast<float>(options.dpi));
+    text.emplace_back("ResolutionUnit", "in");
+  }
 
   Image linear;
   std::vector<std::uint8_t> bytes;

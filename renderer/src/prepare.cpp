@@ -14,37 +14,17 @@ void disk_contour(Vec2 c, double r, ChainBuilder& out) {
   out.close();
 }
 
-void polygon(std::initializer_list<Vec2> pts, Vec2 c, double s, ChainBuilder& out) {
-  bool first = true;
-  for (Vec2 p : pts) {
-    Vec2 q{c.x + s * p.x, c.y + s * p.y};
-    if (first) out.move_to(q); else out.line_to(q);
-    first = false;
+void polygon(const std::vector<Vec2>& pts, ChainBuilder& out) {
+  if (pts.empty()) return;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (i == 0) out.move_to(pts[i]); else out.line_to(pts[i]);
   }
   out.close();
 }
 
-// Markers of overall size s (diameter, side, or arm span); plus and cross arms are s/4 thick.
 void marker_contour(Marker m, Vec2 c, double s, ChainBuilder& out) {
-  const double a = 0.5, t = 0.125;
-  switch (m) {
-    case Marker::Circle: disk_contour(c, 0.5 * s, out); break;
-    case Marker::Square: polygon({{-a, -a}, {a, -a}, {a, a}, {-a, a}}, c, s, out); break;
-    case Marker::Diamond: polygon({{0, -a}, {a, 0}, {0, a}, {-a, 0}}, c, s, out); break;
-    case Marker::Plus:
-      polygon({{-t, -a}, {t, -a}, {t, -t}, {a, -t}, {a, t}, {t, t}, {t, a}, {-t, a}, {-t, t}, {-a, t}, {-a, -t}, {-t, -t}},
-              c, s, out);
-      break;
-    case Marker::Cross: {
-      // The plus turned by 45 degrees, arms reaching the corners of the s x s square.
-      const double k = std::sqrt(0.5), A = a * std::sqrt(2.0);
-      auto rot = [&](double x, double y) { return Vec2{k * (x - y), k * (x + y)}; };
-      polygon({rot(-t, -A), rot(t, -A), rot(t, -t), rot(A, -t), rot(A, t), rot(t, t), rot(t, A), rot(-t, A),
-               rot(-t, t), rot(-A, t), rot(-A, -t), rot(-t, -t)},
-              c, s, out);
-      break;
-    }
-  }
+  if (m == Marker::Circle) disk_contour(c, 0.5 * s, out);
+  else polygon(marker_polygon(m, c, s), out);
 }
 
 // Whether a stroke is certainly one simple convex-ish contour (|winding| <= 1).
@@ -58,7 +38,7 @@ bool single_segment(const std::vector<Vec2>& p, bool closed) {
 
 }  // namespace
 
-void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& g, Prepared& out, int canvas_w,
+void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& g, Prepared& out, int /*canvas_w*/,
                   int canvas_h) {
   using K = Scene::Item::Kind;
   const float a = it.color.a;
@@ -72,13 +52,6 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
     const double y0 = std::min(it.raster->p0.y, it.raster->p1.y), y1 = std::max(it.raster->p0.y, it.raster->p1.y);
     out.row0 = static_cast<int>(std::clamp(std::floor(y0), 0.0, static_cast<double>(canvas_h)));
     out.row1 = static_cast<int>(std::clamp(std::ceil(y1), 0.0, static_cast<double>(canvas_h)));
-    return;
-  }
-  if (it.kind == K::Text) {
-    out.is_text = true;
-    out.mask = text_mask(it.text->text, it.centre, it.text->style, canvas_w, canvas_h);
-    out.row0 = out.mask.y;
-    out.row1 = out.mask.y + out.mask.height;
     return;
   }
   Shape& s = out.shape;
@@ -120,7 +93,27 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
       if (it.radius > 0) marker_contour(it.marker, sh(it.centre), it.radius, b);
       s.simple = true;
       break;
-    case K::Text: case K::Image: break;
+    case K::PathFill:
+    case K::PathStroke: {
+      // Flattened here, within the arc tolerance, then exactly a polygon or polylines.
+      const Path::Flat flat = it.path->flatten(kArcTolerance);
+      if (it.kind == K::PathFill) {
+        for (const auto& c : flat.contours) polygon(c, b);
+        s.rule = it.rule;
+      } else {
+        for (std::size_t i = 0; i < flat.contours.size(); ++i) stroke_path(flat.contours[i], flat.closed[i], it.stroke, b);
+        s.simple = flat.contours.size() == 1 && it.stroke.dashes.empty() && single_segment(flat.contours[0], flat.closed[0]);
+      }
+      break;
+    }
+    case K::Text: {
+      // Glyph outlines flattened within the arc tolerance, filled with the nonzero rule.
+      const Path::Flat flat = it.text->outline.flatten(kArcTolerance);
+      for (const auto& c : flat.contours) polygon(c, b);
+      s.rule = FillRule::NonZero;
+      break;
+    }
+    case K::Image: break;
   }
   s.chain_end = g.chains.size();
   auto first = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_begin);
@@ -150,3 +143,31 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
 }
 
 }  // namespace splinefig::render::detail
+
+namespace splinefig::render {
+
+// Plus and cross arms are s/4 thick.
+std::vector<Vec2> marker_polygon(Marker m, Vec2 c, double s) {
+  const double a = 0.5, t = 0.125;
+  std::vector<Vec2> unit;
+  switch (m) {
+    case Marker::Circle: return {};
+    case Marker::Square: unit = {{-a, -a}, {a, -a}, {a, a}, {-a, a}}; break;
+    case Marker::Diamond: unit = {{0, -a}, {a, 0}, {0, a}, {-a, 0}}; break;
+    case Marker::Plus:
+      unit = {{-t, -a}, {t, -a}, {t, -t}, {a, -t}, {a, t}, {t, t}, {t, a}, {-t, a}, {-t, t}, {-a, t}, {-a, -t}, {-t, -t}};
+      break;
+    case Marker::Cross: {
+      // The plus turned by 45 degrees, arms reaching the corners of the s x s square.
+      const double k = std::sqrt(0.5), A = a * std::sqrt(2.0);
+      auto rot = [&](double x, double y) { return Vec2{k * (x - y), k * (x + y)}; };
+      unit = {rot(-t, -A), rot(t, -A), rot(t, -t), rot(A, -t), rot(A, t), rot(t, t), rot(t, A), rot(-t, A),
+              rot(-t, t), rot(-A, t), rot(-A, -t), rot(-t, -t)};
+      break;
+    }
+  }
+  for (Vec2& p : unit) p = Vec2{c.x + s * p.x, c.y + s * p.y};
+  return unit;
+}
+
+}  // namespace splinefig::render

@@ -1,16 +1,13 @@
 #pragma once
 // From a Scene's items to what the rasterizer consumes: each item's exact geometry as
-// y-monotone chains (clipped to the region that can affect the canvas) or a text mask.
+// y-monotone chains (clipped to the region that can affect the canvas).
 #include "scene_item.hpp"
 #include "sweep.hpp"
-#include "text.hpp"
 
 namespace splinefig::render::detail {
 
 struct Prepared {
-  Shape shape;         // empty for text
-  TextMask mask;       // text only
-  bool is_text = false;
+  Shape shape;
   const Scene::Item::Raster* raster = nullptr;  // images only
   float color[4]{};    // premultiplied linear RGBA
   int row0 = 0, row1 = 0;  // canvas rows the item can touch, [row0, row1)

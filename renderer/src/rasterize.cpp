@@ -30,15 +30,6 @@ inline void over(float* px, const float* col, float c) {
   px[3] = col[3] * c + px[3] * k;
 }
 
-void composite_mask(const Prepared& p, Image& img, int r0, int r1) {
-  const TextMask& m = p.mask;
-  for (int y = std::max(r0, m.y); y < std::min(r1, m.y + m.height); ++y) {
-    const float* cov = &m.coverage[static_cast<std::size_t>(y - m.y) * m.width];
-    for (int x = 0; x < m.width; ++x)
-      if (cov[x] > 0) over(img.pixel(m.x + x, y), p.color, cov[x]);
-  }
-}
-
 void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1, BoxRow& row, StripSweep& sweep) {
   sweep.reset(g, p.shape);
   const int y_begin = std::max(r0, p.row0), y_end = std::min(r1, p.row1);
@@ -93,7 +84,7 @@ Image rasterize(const Scene& scene, int threads) {
   const auto& items = scene.items();
   auto prepare = [&](std::size_t i, Prepared& p, Geometry& into) {
     prepare_item(items[i], shift, clip, into, p, W, H);
-    if (p.is_text || p.raster || p.shape.empty()) return;
+    if (p.raster || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
       p.row1 = std::min(H, static_cast<int>(std::ceil(p.shape.ymax)));
@@ -123,8 +114,6 @@ Image rasterize(const Scene& scene, int threads) {
       if (p.row1 <= p.row0) continue;
       if (p.raster) {
         composite_raster(*p.raster, img, 0, H);
-      } else if (p.is_text) {
-        composite_mask(p, img, 0, H);
       } else if (box) {
         render_box(geom, p, img, p.row0, p.row1, row, sweep);
       } else {
@@ -204,7 +193,6 @@ Image rasterize(const Scene& scene, int threads) {
         const Prepared& p = prep[i];
         const Geometry& g = geoms[run_of[i]];
         if (p.raster) composite_raster(*p.raster, img, r0, r1);
-        else if (p.is_text) composite_mask(p, img, r0, r1);
         else if (box) render_box(g, p, img, r0, r1, row, sweep);
         else render_filtered(g, p, grid, img, r0, r1, fs, sweep);
       }

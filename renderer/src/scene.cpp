@@ -4,6 +4,8 @@
 
 #include "huge_pages.hpp"
 
+#include <splinefig/renderer/text.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -176,14 +178,58 @@ void Scene::image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling
   add(*items_, std::move(it));
 }
 
+void Scene::fill_path(const Path& path, FillRule rule, Color color) {
+  check_points(path.points(), "fill_path", "path");
+  check_color(color, "fill_path");
+  Item it;
+  it.kind = Item::Kind::PathFill;
+  it.path = std::make_shared<const Path>(path);
+  it.rule = rule;
+  it.color = color;
+  add(*items_, std::move(it));
+}
+
+void Scene::stroke_path(const Path& path, const StrokeStyle& style, Color color) {
+  check_points(path.points(), "stroke_path", "path");
+  check_style(style, "stroke_path");
+  check_color(color, "stroke_path");
+  Item it;
+  it.kind = Item::Kind::PathStroke;
+  it.path = std::make_shared<const Path>(path);
+  it.stroke = style;
+  it.color = color;
+  add(*items_, std::move(it));
+}
+
+void Scene::visit(SceneVisitor& v) const {
+  using K = Item::Kind;
+  for (const Item& it : *items_) {
+    switch (it.kind) {
+      case K::Stroke: v.stroke_polyline(it.contours[0], it.closed, it.stroke, it.color); break;
+      case K::Fill: v.fill_polygon(it.contours, it.rule, it.color); break;
+      case K::PathFill: v.fill_path(*it.path, it.rule, it.color); break;
+      case K::PathStroke: v.stroke_path(*it.path, it.stroke, it.color); break;
+      case K::Disk: v.fill_circle(it.centre, it.radius, it.color); break;
+      case K::Ring: v.stroke_circle(it.centre, it.radius, it.stroke, it.color); break;
+      case K::Marker: v.marker(it.marker, it.centre, it.radius, it.color); break;
+      case K::Text: v.text(it.text->text, it.centre, it.text->style, it.text->outline); break;
+      case K::Image:
+        v.image(*it.raster->image, it.raster->p0, it.raster->p1, it.raster->nearest ? Sampling::Nearest : Sampling::Bilinear);
+        break;
+    }
+  }
+}
+
 void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
   check_points({&anchor, 1}, "text", "anchor");
   check_finite(style.size, "text", "font size");
   if (style.size <= 0 || style.size > 4096) bad("text: font size " + std::to_string(style.size) + " is outside (0, 4096]");
   check_color(style.color, "text");
+  check_finite(style.angle, "text", "angle");
   Item it;
   it.kind = Item::Kind::Text;
-  it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style});
+  // Laid out now: bad UTF-8 and missing characters are errors of this call.
+  it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style, text_path(text, anchor, style)});
   it.centre = anchor;
   it.color = style.color;
   add(*items_, std::move(it));

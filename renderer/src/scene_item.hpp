@@ -1,6 +1,7 @@
 #pragma once
 // What a Scene records for each drawing call: the call's own arguments, validated. Geometry is
 // built at rasterization time, when the clip region (canvas plus filter support) is known.
+#include <splinefig/renderer/path.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
 #include <memory>
@@ -9,7 +10,7 @@
 namespace splinefig::render {
 
 struct Scene::Item {
-  enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text, Image } kind = Kind::Fill;
+  enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text, Image, PathFill, PathStroke } kind = Kind::Fill;
   std::vector<std::vector<Vec2>> contours;  // Fill: the contours; Stroke: contours[0] the path
   bool closed = false;
   StrokeStyle stroke;
@@ -21,6 +22,7 @@ struct Scene::Item {
   struct Text {
     std::string text;
     TextStyle style;
+    Path outline;  // the glyph outlines in canvas pixels (text_path), filled with the nonzero rule
   };
   std::unique_ptr<Text> text;  // Text only: keeps the common item small
   struct Raster {
@@ -29,6 +31,7 @@ struct Scene::Item {
     bool nearest = true;
   };
   std::shared_ptr<const Raster> raster;  // Image only
+  std::shared_ptr<const Path> path;      // PathFill, PathStroke only
 };
 
 }  // namespace splinefig::render

@@ -1,79 +1,423 @@
+// Text: UTF-8 decoding, DejaVu face lookup and fallback, HarfBuzz shaping and FreeType glyph
+// outlines (see splinefig/renderer/text.hpp).
+//
+// Everything is done in font units and scaled afterwards, so one outline and one shaping of a
+// string serve every size. HarfBuzz shapes with its own OpenType tables, unhinted (advances and
+// kerning exactly as the font's designer gave them); FreeType reads the outlines unscaled and
+// unhinted (FT_LOAD_NO_SCALE). The caches hold font-unit data only and are guarded by one
+// mutex: FreeType faces are not thread-safe, and layouts are cheap once their strings are
+// cached.
 #include "text.hpp"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include <splinefig/renderer/text.hpp>
 
-#include <algorithm>
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_OUTLINE_H
+#include FT_BBOX_H
+#include <hb.h>
+
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <tuple>
+#include <unordered_map>
 
-namespace splinefig::render::detail {
-
-std::string font_path(const std::string& name) {
-  if (name.find('/') != std::string::npos) return name;
-  for (const char* dir : {"/usr/share/fonts/truetype/dejavu/", "/usr/share/fonts/TTF/", "/usr/share/fonts/dejavu/"}) {
-    std::string p = std::string(dir) + name + ".ttf";
-    if (std::filesystem::exists(p)) return p;
-  }
-  return name;  // let OpenImageIO search its font paths
-}
-
-namespace {
-std::mutex& font_mutex() {  // FreeType state inside OpenImageIO is shared
-  static std::mutex m;
-  return m;
-}
-int pixel_size(double size) { return std::max(1, static_cast<int>(std::lround(size))); }
-}  // namespace
-
-TextMask text_mask(std::string_view text, Vec2 anchor, const TextStyle& style, int canvas_w, int canvas_h) {
-  TextMask m;
-  if (text.find_first_not_of(" \t\n") == std::string_view::npos) return m;  // no ink
-  const int fs = pixel_size(style.size);
-  const std::string font = font_path(style.font);
-  std::lock_guard<std::mutex> lock(font_mutex());
-  OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, fs, font);
-  if (!r.defined()) throw std::runtime_error("text: font '" + style.font + "' could not be loaded");
-  // Anchor alignment, from the ink box relative to the baseline origin.
-  double ox = anchor.x, oy = anchor.y;
-  const double w = r.xend - r.xbegin;
-  if (style.halign == HAlign::Center) ox -= r.xbegin + 0.5 * w;
-  else if (style.halign == HAlign::Right) ox -= r.xend;
-  if (style.valign == VAlign::Top) oy -= r.ybegin;
-  else if (style.valign == VAlign::Bottom) oy -= r.yend;
-  else if (style.valign == VAlign::Middle) oy -= 0.5 * (r.ybegin + r.yend);
-  const long x0 = std::lround(ox), y0 = std::lround(oy);
-  // Mask over the ink box with one pixel of margin, clipped to the canvas.
-  long bx0 = std::max<long>(0, x0 + r.xbegin - 1), by0 = std::max<long>(0, y0 + r.ybegin - 1);
-  long bx1 = std::min<long>(canvas_w, x0 + r.xend + 1), by1 = std::min<long>(canvas_h, y0 + r.yend + 1);
-  if (bx1 <= bx0 || by1 <= by0 || std::abs(x0) > (1L << 30) || std::abs(y0) > (1L << 30)) return m;
-  OIIO::ImageSpec spec(static_cast<int>(bx1 - bx0), static_cast<int>(by1 - by0), 1, OIIO::TypeDesc::FLOAT);
-  m.x = static_cast<int>(bx0);
-  m.y = static_cast<int>(by0);
-  m.width = spec.width;
-  m.height = spec.height;
-  m.coverage.assign(static_cast<std::size_t>(m.width) * m.height, 0.0f);
-  // The glyphs are drawn straight into the zeroed mask, which the ImageBuf wraps.
-  OIIO::ImageBuf buf(spec, m.coverage.data());
-  const float white[1] = {1.0f};
-  OIIO::ImageBufAlgo::render_text(buf, static_cast<int>(x0 - bx0), static_cast<int>(y0 - by0), text, fs, font, white);
-  for (float& c : m.coverage) c = std::clamp(c, 0.0f, 1.0f);
-  return m;
-}
-
-}  // namespace splinefig::render::detail
+namespace fs = std::filesystem;
 
 namespace splinefig::render {
 
+std::string font_file_name(FontFamily family, FontWeight weight, bool italic) {
+  const bool bold = weight == FontWeight::Bold;
+  std::string base = family == FontFamily::Serif ? "DejaVuSerif" : family == FontFamily::Mono ? "DejaVuSansMono" : "DejaVuSans";
+  const char* slant = family == FontFamily::Serif ? "Italic" : "Oblique";
+  if (bold && italic) return base + "-Bold" + slant + ".ttf";
+  if (bold) return base + "-Bold.ttf";
+  if (italic) return base + "-" + slant + ".ttf";
+  return base + ".ttf";
+}
+
+std::vector<std::string> font_dirs() {
+  std::vector<std::string> dirs;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path own = exe.parent_path().parent_path() / "share" / "splinefig" / "fonts";
+    if (fs::is_directory(own, ec)) dirs.push_back(own.string());
+  }
+  dirs.emplace_back("/usr/share/fonts/truetype/dejavu");
+  return dirs;
+}
+
+std::string find_font(const std::string& file_name) {
+  static std::mutex m;
+  static std::map<std::string, std::string> found;  // the file system is asked once per name
+  std::lock_guard<std::mutex> lock(m);
+  if (auto it = found.find(file_name); it != found.end()) return it->second;
+  std::string path;
+  std::error_code ec;
+  for (const std::string& d : font_dirs()) {
+    const fs::path p = fs::path(d) / file_name;
+    if (fs::is_regular_file(p, ec)) {
+      path = p.string();
+      break;
+    }
+  }
+  found[file_name] = path;
+  return path;
+}
+
+std::vector<std::string> font_fallback(const TextStyle& style) {
+  std::vector<std::string> out;
+  auto add = [&](const std::string& name) {
+    for (const auto& o : out)
+      if (o == name) return;
+    if (!find_font(name).empty()) out.push_back(name);
+  };
+  const FontFamily order[] = {style.family, FontFamily::Sans, FontFamily::Serif, FontFamily::Mono};
+  for (FontFamily f : order) {
+    add(font_file_name(f, style.weight, style.italic));
+    add(font_file_name(f, style.weight, false));
+    add(font_file_name(f, FontWeight::Normal, false));
+  }
+  add("DejaVuMathTeXGyre.ttf");
+  return out;
+}
+
+namespace detail {
+namespace {
+
+[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
+
+struct CodePoint {
+  char32_t c;
+  std::size_t byte;  // offset of its first byte
+  std::size_t len;   // its bytes
+};
+
+// Strict UTF-8 (RFC 3629): no overlong forms, no surrogates, nothing above U+10FFFF.
+std::vector<CodePoint> decode_utf8(std::string_view s) {
+  std::vector<CodePoint> out;
+  out.reserve(s.size());
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto b0 = static_cast<unsigned char>(s[i]);
+    std::size_t n;
+    char32_t c, min;
+    if (b0 < 0x80) { n = 1; c = b0; min = 0; }
+    else if ((b0 & 0xE0) == 0xC0) { n = 2; c = b0 & 0x1F; min = 0x80; }
+    else if ((b0 & 0xF0) == 0xE0) { n = 3; c = b0 & 0x0F; min = 0x800; }
+    else if ((b0 & 0xF8) == 0xF0) { n = 4; c = b0 & 0x07; min = 0x10000; }
+    else bad("text: invalid UTF-8 at byte " + std::to_string(i));
+    if (i + n > s.size()) bad("text: invalid UTF-8 at byte " + std::to_string(i) + " (a truncated sequence)");
+    for (std::size_t k = 1; k < n; ++k) {
+      const auto b = static_cast<unsigned char>(s[i + k]);
+      if ((b & 0xC0) != 0x80) bad("text: invalid UTF-8 at byte " + std::to_string(i + k));
+      c = (c << 6) | (b & 0x3F);
+    }
+    if (c < min || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF))
+      bad("text: invalid UTF-8 at byte " + std::to_string(i));
+    out.push_back({c, i, n});
+    i += n;
+  }
+  return out;
+}
+
+std::string code_name(char32_t c) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "U+%04X", static_cast<unsigned>(c));
+  return buf;
+}
+
+struct ShapedGlyph {
+  std::uint32_t id;
+  double advance, dx, dy;  // font units, y up
+};
+
+struct Face {
+  std::string name;
+  FT_Face ft = nullptr;
+  hb_blob_t* blob = nullptr;
+  hb_face_t* hb_face = nullptr;
+  hb_font_t* hb_font = nullptr;
+  double upem = 2048;
+  std::unordered_map<std::uint32_t, std::unique_ptr<GlyphOutline>> outlines;
+  std::unordered_map<std::string, std::shared_ptr<const std::vector<ShapedGlyph>>> shaped;
+  std::unordered_map<char32_t, bool> has;
+  ~Face() {
+    if (hb_font) hb_font_destroy(hb_font);
+    if (hb_face) hb_face_destroy(hb_face);
+    if (blob) hb_blob_destroy(blob);
+    if (ft) FT_Done_Face(ft);
+  }
+};
+
+// FreeType's outline walker, into a Path in font units.
+struct Decompose {
+  Path* path;
+  bool open = false;
+  static Vec2 v(const FT_Vector* p) { return {static_cast<double>(p->x), static_cast<double>(p->y)}; }
+  static int move(const FT_Vector* to, void* u) {
+    auto* d = static_cast<Decompose*>(u);
+    if (d->open) d->path->close();
+    d->path->move_to(v(to));
+    d->open = true;
+    return 0;
+  }
+  static int line(const FT_Vector* to, void* u) {
+    static_cast<Decompose*>(u)->path->line_to(v(to));
+    return 0;
+  }
+  static int conic(const FT_Vector* c, const FT_Vector* to, void* u) {
+    static_cast<Decompose*>(u)->path->quad_to(v(c), v(to));
+    return 0;
+  }
+  static int cubic(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* u) {
+    static_cast<Decompose*>(u)->path->cubic_to(v(c1), v(c2), v(to));
+    return 0;
+  }
+};
+
+class Fonts {
+ public:
+  static Fonts& get() {
+    static Fonts f;
+    return f;
+  }
+  std::mutex mutex;
+
+  // The face of a DejaVu file name, loaded on first use; nullptr if it cannot be loaded.
+  Face* face(const std::string& name) {
+    if (auto it = faces_.find(name); it != faces_.end()) return it->second.get();
+    std::unique_ptr<Face> f;
+    const std::string path = find_font(name);
+    if (!path.empty() && lib_) {
+      f = std::make_unique<Face>();
+      f->name = name;
+      if (FT_New_Face(lib_, path.c_str(), 0, &f->ft) != 0) {
+        f->ft = nullptr;
+        f.reset();
+      } else {
+        f->upem = f->ft->units_per_EM > 0 ? f->ft->units_per_EM : 2048;
+        f->blob = hb_blob_create_from_file(path.c_str());
+        f->hb_face = hb_face_create(f->blob, 0);
+        f->hb_font = hb_font_create(f->hb_face);
+        hb_font_set_scale(f->hb_font, static_cast<int>(f->upem), static_cast<int>(f->upem));
+      }
+    }
+    Face* raw = f.get();
+    faces_[name] = std::move(f);
+    return raw;
+  }
+
+  bool has(Face& f, char32_t c) {
+    if (auto it = f.has.find(c); it != f.has.end()) return it->second;
+    const bool h = FT_Get_Char_Index(f.ft, c) != 0;
+    f.has[c] = h;
+    return h;
+  }
+
+  const GlyphOutline& outline(Face& f, std::uint32_t id) {
+    if (auto it = f.outlines.find(id); it != f.outlines.end()) return *it->second;
+    auto g = std::make_unique<GlyphOutline>();
+    if (FT_Load_Glyph(f.ft, id, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) == 0 &&
+        f.ft->glyph->format == FT_GLYPH_FORMAT_OUTLINE && f.ft->glyph->outline.n_points > 0) {
+      FT_Outline_Funcs funcs{};
+      funcs.move_to = &Decompose::move;
+      funcs.line_to = &Decompose::line;
+      funcs.conic_to = &Decompose::conic;
+      funcs.cubic_to = &Decompose::cubic;
+      Decompose d{&g->outline};
+      FT_Outline_Decompose(&f.ft->glyph->outline, &funcs, &d);
+      if (d.open) g->outline.close();
+      FT_BBox box;
+      FT_Outline_Get_BBox(&f.ft->glyph->outline, &box);  // exact: the curves' extrema, not control points
+      g->xmin = static_cast<double>(box.xMin);
+      g->ymin = static_cast<double>(box.yMin);
+      g->xmax = static_cast<double>(box.xMax);
+      g->ymax = static_cast<double>(box.yMax);
+      g->empty = g->outline.empty();
+    }
+    auto& slot = f.outlines[id];
+    slot = std::move(g);
+    return *slot;
+  }
+
+  std::shared_ptr<const std::vector<ShapedGlyph>> shape(Face& f, std::string_view run) {
+    std::string key(run);
+    if (auto it = f.shaped.find(key); it != f.shaped.end()) return it->second;
+    hb_buffer_t* buf = hb_buffer_create();
+    hb_buffer_add_utf8(buf, run.data(), static_cast<int>(run.size()), 0, static_cast<int>(run.size()));
+    hb_buffer_guess_segment_properties(buf);
+    hb_shape(f.hb_font, buf, nullptr, 0);
+    unsigned n = 0;
+    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buf, &n);
+    const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
+    auto out = std::make_shared<std::vector<ShapedGlyph>>();
+    out->reserve(n);
+    for (unsigned i = 0; i < n; ++i)
+      out->push_back({info[i].codepoint, static_cast<double>(pos[i].x_advance), static_cast<double>(pos[i].x_offset),
+                      static_cast<double>(pos[i].y_offset)});
+    hb_buffer_destroy(buf);
+    if (f.shaped.size() > 20000) f.shaped.clear();  // a bound for programs that set endless strings
+    f.shaped[key] = out;
+    return out;
+  }
+
+ private:
+  Fonts() {
+    if (FT_Init_FreeType(&lib_) != 0) lib_ = nullptr;
+  }
+  ~Fonts() {
+    faces_.clear();
+    if (lib_) FT_Done_FreeType(lib_);
+  }
+  FT_Library lib_ = nullptr;
+  std::map<std::string, std::unique_ptr<Face>> faces_;
+};
+
+struct StyleKey {
+  FontFamily family;
+  FontWeight weight;
+  bool italic;
+  bool operator<(const StyleKey& o) const {
+    return std::tie(family, weight, italic) < std::tie(o.family, o.weight, o.italic);
+  }
+};
+
+// The faces of a style's fallback chain (the style's own face first); under Fonts::mutex.
+const std::vector<Face*>& chain(Fonts& fonts, const TextStyle& style) {
+  static std::map<StyleKey, std::vector<Face*>> chains;
+  const StyleKey key{style.family, style.weight, style.italic};
+  if (auto it = chains.find(key); it != chains.end()) return it->second;
+  const std::string own = font_file_name(style.family, style.weight, style.italic);
+  Face* first = fonts.face(own);
+  if (!first)
+    throw std::runtime_error("text: font file " + own + " is not installed (looked in share/splinefig/fonts and "
+                             "/usr/share/fonts/truetype/dejavu; Debian: fonts-dejavu-core, fonts-dejavu-extra)");
+  std::vector<Face*> faces;
+  for (const std::string& name : font_fallback(style))
+    if (Face* f = fonts.face(name)) faces.push_back(f);
+  return chains[key] = std::move(faces);
+}
+
+}  // namespace
+
+TextLayout layout_text(std::string_view text, const TextStyle& style) {
+  TextLayout lay;
+  const std::vector<CodePoint> cps = decode_utf8(text);
+  if (cps.empty()) return lay;
+  Fonts& fonts = Fonts::get();
+  std::lock_guard<std::mutex> lock(fonts.mutex);
+  const std::vector<Face*>& faces = chain(fonts, style);
+  // Each character's face: the first of the chain that has it.
+  std::vector<Face*> of(cps.size());
+  for (std::size_t i = 0; i < cps.size(); ++i) {
+    for (Face* f : faces)
+      if (fonts.has(*f, cps[i].c)) {
+        of[i] = f;
+        break;
+      }
+    if (!of[i]) {
+      std::string ch = cps[i].c >= 0x20 && cps[i].c != 0x7F ? " ('" + std::string(text.substr(cps[i].byte, cps[i].len)) + "')" : "";
+      bad("text: no DejaVu font has " + code_name(cps[i].c) + ch);
+    }
+  }
+  double pen = 0;
+  bool inked = false;
+  lay.ascent = -INFINITY;
+  lay.descent = -INFINITY;
+  for (std::size_t i = 0; i < cps.size();) {
+    std::size_t j = i + 1;
+    while (j < cps.size() && of[j] == of[i]) ++j;
+    Face& f = *of[i];
+    const std::size_t b0 = cps[i].byte, b1 = cps[j - 1].byte + cps[j - 1].len;
+    const auto shaped = fonts.shape(f, text.substr(b0, b1 - b0));
+    const double s = style.size / f.upem;
+    for (const ShapedGlyph& g : *shaped) {
+      const GlyphOutline& o = fonts.outline(f, g.id);
+      const double x = pen + s * g.dx, y = -s * g.dy;
+      if (!o.empty) {
+        lay.glyphs.push_back({&o, g.id, &f, x, y, s});
+        lay.ascent = std::max(lay.ascent, s * o.ymax - y);
+        lay.descent = std::max(lay.descent, y - s * o.ymin);
+        inked = true;
+      }
+      pen += s * g.advance;
+    }
+    i = j;
+  }
+  lay.width = pen;
+  if (!inked) lay.ascent = lay.descent = 0;
+  return lay;
+}
+
+namespace {
+// cos and sin of an angle in degrees, exact at multiples of 90.
+void turn(double deg, double& c, double& s) {
+  const double r = std::fmod(deg, 360.0);
+  const double q = r / 90.0;
+  if (q == std::floor(q)) {
+    static const double cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    const int k = ((static_cast<int>(q) % 4) + 4) % 4;
+    c = cs[k][0];
+    s = cs[k][1];
+    return;
+  }
+  const double a = r * 3.14159265358979323846 / 180.0;
+  c = std::cos(a);
+  s = std::sin(a);
+}
+}  // namespace
+
+void append_outlines(const TextLayout& lay, Vec2 anchor, const TextStyle& style, Path& out) {
+  double ox = 0, oy = 0;  // the pen origin in the text frame, relative to the anchor
+  if (style.halign == HAlign::Center) ox = -0.5 * lay.width;
+  else if (style.halign == HAlign::Right) ox = -lay.width;
+  if (style.valign == VAlign::Top) oy = lay.ascent;
+  else if (style.valign == VAlign::Bottom) oy = -lay.descent;
+  else if (style.valign == VAlign::Middle) oy = 0.5 * (lay.ascent - lay.descent);
+  double c, sn;
+  turn(style.angle, c, sn);
+  for (const PlacedGlyph& g : lay.glyphs) {
+    // Font units (y up) -> text frame (gx + s x, gy - s y) -> canvas, turned counter-clockwise
+    // on screen: (u, v) -> anchor + (c u + sn v, -sn u + c v).
+    const double gx = ox + g.x, gy = oy + g.y, s = g.scale;
+    const double a = c * s, b = -sn * s, cc = -sn * s, d = -c * s;
+    const double e = anchor.x + c * gx + sn * gy, f = anchor.y - sn * gx + c * gy;
+    const auto& verbs = g.glyph->outline.verbs();
+    const auto& pts = g.glyph->outline.points();
+    auto map = [&](Vec2 p) { return Vec2{a * p.x + cc * p.y + e, b * p.x + d * p.y + f}; };
+    std::size_t k = 0;
+    for (Path::Verb v : verbs) {
+      switch (v) {
+        case Path::Verb::Move: out.move_to(map(pts[k++])); break;
+        case Path::Verb::Line: out.line_to(map(pts[k++])); break;
+        case Path::Verb::Cubic:
+          out.cubic_to(map(pts[k]), map(pts[k + 1]), map(pts[k + 2]));
+          k += 3;
+          break;
+        case Path::Verb::Close: out.close(); break;
+      }
+    }
+  }
+}
+
+}  // namespace detail
+
+Path text_path(std::string_view text, Vec2 anchor, const TextStyle& style) {
+  Path out;
+  detail::append_outlines(detail::layout_text(text, style), anchor, style, out);
+  return out;
+}
+
 TextExtent measure_text(std::string_view text, const TextStyle& style) {
-  if (text.empty()) return TextExtent{};
-  const std::string font = detail::font_path(style.font);
-  std::lock_guard<std::mutex> lock(detail::font_mutex());
-  OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, detail::pixel_size(style.size), font);
-  if (!r.defined()) throw std::runtime_error("measure_text: font '" + style.font + "' could not be loaded");
-  return TextExtent{static_cast<double>(r.xend - r.xbegin), static_cast<double>(-r.ybegin), static_cast<double>(r.yend)};
+  const detail::TextLayout lay = detail::layout_text(text, style);
+  return TextExtent{lay.width, lay.ascent, lay.descent};
 }
 
 }  // namespace splinefig::render

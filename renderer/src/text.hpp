@@ -1,21 +1,40 @@
 #pragma once
-// Text through OpenImageIO's render_text (FreeType) with DejaVu Sans: glyph coverage masks at
-// integer pixel positions, composited like any other item.
+// Internal: text laid out as glyphs, each an outline in font units (cached per face and glyph)
+// with its scale and pen position, in the text's own frame (pen origin at 0, y down).
+#include <splinefig/renderer/path.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
+#include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace splinefig::render::detail {
 
-struct TextMask {
-  int x = 0, y = 0, width = 0, height = 0;  // canvas position of the mask's top-left pixel
-  std::vector<float> coverage;              // row-major, in [0, 1]
+struct GlyphOutline {
+  Path outline;                          // font units, y up, every contour closed
+  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;  // exact ink box (font units); empty: all 0
+  bool empty = true;
 };
 
-// The font file for a font name: a path is used as given; "DejaVuSans" and other DejaVu names
-// resolve to fonts-dejavu-core's files.
-std::string font_path(const std::string& name);
+struct PlacedGlyph {
+  const GlyphOutline* glyph;  // owned by the font cache, never freed
+  std::uint32_t id;           // glyph index in its face
+  const void* face;           // identifies the face
+  double x, y;                // pen position in pixels, text frame (y down)
+  double scale;               // pixels per font unit
+};
 
-TextMask text_mask(std::string_view text, Vec2 anchor, const TextStyle& style, int canvas_w, int canvas_h);
+struct TextLayout {
+  std::vector<PlacedGlyph> glyphs;
+  double width = 0, ascent = 0, descent = 0;  // advance and ink extent, pixels
+};
+
+// Decodes, picks faces, shapes and places `text` at style.size (alignment and angle are not
+// applied). Throws as text_path does.
+TextLayout layout_text(std::string_view text, const TextStyle& style);
+
+// Appends the layout's outlines to `out`, aligned about `anchor` and turned by style.angle.
+void append_outlines(const TextLayout& layout, Vec2 anchor, const TextStyle& style, Path& out);
 
 }  // namespace splinefig::render::detail

@@ -65,12 +65,12 @@ TEST_CASE("companion figures show their documented checks") {
   SECTION("s003-fig16: basis function f_k is 1 at t = k") {
     const Rendered f = render("s003-fig16");
     // f_k(k) = 1 and f_k'(k) = 0 for the inner ones (f_2 is symmetric about 2): the curve is at
-    // height 1 a few pixels beside its knot's dot.
+    // height 1 a few pixels beside its knot's dot. (f_4 rises steeply into its end dot, which
+    // covers the point where it reaches 1: it is not checked here.)
     const AxesMap m = f.map();
     const double dx = 6 / (m.px(1) - m.px(0));  // 6 px in t
     CHECK(on(f, 2 + dx, 1, "#2ca02c", 0.3));
     CHECK(on(f, 2 - dx, 1, "#2ca02c", 0.3));
-    CHECK(on(f, 4 - dx / 3, 1, "#9467bd", 0.3));
   }
   SECTION("s003-fig17: the in-between heel is (13 S_0 + 22 S_1 - 3 S_2)/32 (DD-4(d))") {
     const Rendered f = render("s003-fig17");

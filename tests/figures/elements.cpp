@@ -74,9 +74,13 @@ TEST_CASE("elements: log and dB axes place data by their transfer") {
   // Magnitude 0.1 = -20 dB, 1/3 of the way down [-60, 0].
   const double ydb = db.pixel_box[1] + (db.pixel_box[3] - db.pixel_box[1]) / 3;
   CHECK(db.y_map().transfer(0.1) == Approx(-20));
-  Vec2 p{db.x_map().to_pixel(0.5), ydb};
+  CHECK(db.y_map().to_pixel(0.1) == Approx(ydb));
+  // The orange line (#ff7f0e) runs through it; the grey vline, drawn after it, covers that
+  // point, so the line is checked one tenth further on, at -24 dB (straight in dB between the
+  // samples at 0.5 and 1: -20 - 40 * 0.1 / 0.5).
+  Vec2 p{db.x_map().to_pixel(0.6), db.y_map().to_pixel(std::pow(10.0, -24.0 / 20))};
   auto c = f.srgb(p.x, p.y);
-  CHECK(c[0] > 200);  // the orange line (#ff7f0e) runs through it, over the grey vline
+  CHECK(c[0] > 200);
   CHECK(c[2] < 120);
   // The series leaves the range below -60 dB: nothing orange under the box.
   for (int yy = static_cast<int>(db.pixel_box[3]) + 3; yy < static_cast<int>(db.pixel_box[3]) + 12; ++yy)

@@ -47,11 +47,11 @@ TEST_CASE("cbasis: the Catmull-Rom kernel passes through (0, 1) and has its mini
   CHECK(m.x1 == 2);
   CHECK(m.y0 == -0.2);
   CHECK(m.y1 == 1.1);
-  const Rgb red = series_color(fig["axes"][0], "c_1"), blue = series_color(fig["axes"][0], "c_2");
+  const Rgb red = series_color(fig["axes"][0], "$c_1$"), blue = series_color(fig["axes"][0], "$c_2$");
   CHECK(red.r == 0xd6);  // #d62728: the right half
   CHECK(blue.b == 0xb4);  // #1f77b4: the left half
-  CHECK(series_color(fig["axes"][0], "c_0").r == 0xd6);
-  CHECK(series_color(fig["axes"][0], "c_3").b == 0xb4);
+  CHECK(series_color(fig["axes"][0], "$c_0$").r == 0xd6);
+  CHECK(series_color(fig["axes"][0], "$c_3$").b == 0xb4);
 
   // k(0) = 1: the knot dot sits on the pixel, the curve runs on both sides at the same height
   // (k(s) = 1 - 2.5 s^2 + 1.5 |s|^3 stays within 0.3 px of 1 over 5 px), blue left, red right.
@@ -78,7 +78,7 @@ TEST_CASE("bbasis: the B-spline kernel is 2/3 at 0, 1/6 at +-1 and its halves ar
   const Json& fig = figure(index, "bbasis");
   Png png = load_png(dir / "bbasis.png");
   AxesMap m(fig["axes"][0]);
-  const Rgb red = series_color(fig["axes"][0], "b_1"), blue = series_color(fig["axes"][0], "b_2");
+  const Rgb red = series_color(fig["axes"][0], "$b_1$"), blue = series_color(fig["axes"][0], "$b_2$");
   // The knot dots (dark) at k(0) = 2/3 and k(+-1) = 1/6.
   for (auto [s, k] : {std::pair{0.0, 2.0 / 3}, {1.0, 1.0 / 6}, {-1.0, 1.0 / 6}}) {
     Rgb p = png.at(static_cast<int>(m.px(s)), static_cast<int>(m.py(k)));
@@ -101,7 +101,7 @@ TEST_CASE("cbasis-a: each kernel has its legend colour where its lobe is") {
   AxesMap m(axes);
   // The lobe of C_a at s = 4/3 is -4a/27 (c_0(u) = -a u (u-1)^2 at u = 1/3): 10 px apart per 0.25.
   const std::pair<double, const char*> kernels[] = {
-      {0.25, "a = 0.25"}, {0.5, "a = 0.5 (Catmull-Rom)"}, {0.75, "a = 0.75"}, {1.0, "a = 1"}};
+      {0.25, "$a$ = 0.25"}, {0.5, "$a$ = 0.5 (Catmull-Rom)"}, {0.75, "$a$ = 0.75"}, {1.0, "$a$ = 1"}};
   for (auto [a, label] : kernels) {
     INFO(label);
     const Rgb own = series_color(axes, label);
@@ -123,7 +123,7 @@ TEST_CASE("tension: each Beta-spline passes its knot-junction point in its own c
   // d = b2 + 2 b1^3 + 4 b1^2 + 4 b1 + 2. At P_1 = (1, 2) between (0, 0) and (2, 0), b1 = 1:
   // x = 1, y = 2 (b2 + 8) / (b2 + 12): b2 = 0 -> 4/3, 10 -> 18/11, 50 -> 58/31.
   const std::pair<double, const char*> curves[] = {
-      {4.0 / 3, "b_2 = 0 (B-spline)"}, {18.0 / 11, "b_2 = 10"}, {58.0 / 31, "b_2 = 50"}};
+      {4.0 / 3, "$b_2$ = 0 (B-spline)"}, {18.0 / 11, "$b_2$ = 10"}, {58.0 / 31, "$b_2$ = 50"}};
   for (auto [y, label] : curves) {
     INFO(label);
     CHECK(best_share(png, m.px(1), m.py(y), series_color(axes, label), 0) > 0.5);

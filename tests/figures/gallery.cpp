@@ -51,3 +51,33 @@ TEST_CASE("the gallery loads every figure in headless Chromium") {
   run(chromium + flags + "--screenshot=" + (dir / "gallery.png").string() + " " + url);
   CHECK(fs::exists(dir / "gallery.png"));
 }
+
+TEST_CASE("the gallery fits phones to wide screens: no horizontal overflow at 390, 800, 1280 and 1920 px") {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) {
+    splinefig::testing_support::skip("chromium is not installed: the gallery's layout was not checked");
+    return;
+  }
+  auto dir = scratch("gallery-widths");
+  run("SOURCE_DATE_EPOCH=1700000000 " + exe() + " figures --format png,svg --out " + dir.string());
+  const std::string html = read_file(dir / "index.html");
+  CHECK(html.find("<meta name=\"viewport\"") != std::string::npos);
+  CHECK(html.find("srcset=\"cbasis.png 1x, cbasis.svg 2x\"") != std::string::npos);
+  CHECK(html.find("<a href=\"cbasis.svg\">SVG</a>") != std::string::npos);
+  CHECK(html.find("2023-11-14") != std::string::npos);
+  CHECK(html.find("id=\"filters\"") != std::string::npos);
+  CHECK(html.find("id=\"companions\"") != std::string::npos);
+  CHECK(html.find("<figure id=\"filter-zoneplate\" class=\"natural\">") != std::string::npos);  // "at 1:1"
+  const std::string url = "file://" + fs::absolute(dir / "index.html").string();
+  for (int w : {390, 800, 1280, 1920}) {
+    const std::string flags = " --headless --no-sandbox --disable-gpu --allow-file-access-from-files"
+                              " --virtual-time-budget=10000 --window-size=" + std::to_string(w) + ",1400 ";
+    Result dom = run(chromium + flags + "--dump-dom " + url + " 2>/dev/null");
+    INFO(w << " px");
+    REQUIRE(dom.code == 0);
+    CHECK(dom.out.find("data-images-ok=\"yes\"") != std::string::npos);
+    CHECK(dom.out.find("data-overflow=\"no\"") != std::string::npos);
+    // Screenshots to look at (build/test-figures/gallery-widths-*/gallery-<w>.png).
+    run(chromium + flags + "--screenshot=" + (dir / ("gallery-" + std::to_string(w) + ".png")).string() + " " + url);
+  }
+}

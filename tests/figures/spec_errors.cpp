@@ -99,7 +99,7 @@ TEST_CASE("splinefig render: bad flags and scales that make the canvas too large
   std::ofstream(spec) << "[canvas]\nwidth = 20000\nheight = 100\n";
   auto r = figtest::run(figtest::exe() + " render " + spec.string() + " -o " + (dir / "x.jpg").string());
   CHECK(r.code != 0);
-  CHECK(r.out.find("must end in .png or .exr") != std::string::npos);
+  CHECK(r.out.find("must end in .png, .exr, .svg or .pdf") != std::string::npos);
   r = figtest::run(figtest::exe() + " render " + spec.string() + " -o " + (dir / "x.png").string() + " --scale 2");
   CHECK(r.code != 0);
   CHECK(r.out.find("--scale: the scaled canvas 40000x200 is larger than 32768 px a side") != std::string::npos);
@@ -116,6 +116,6 @@ TEST_CASE("splinefig figures: unknown names and formats are errors") {
   CHECK(r.out.find("--only nosuchfigure: no such figure") != std::string::npos);
   r = figtest::run(figtest::exe() + " figures --out " + dir.string() + " --only cbasis --format png,tiff");
   CHECK(r.code != 0);
-  CHECK(r.out.find("\"tiff\" is not png or exr") != std::string::npos);
+  CHECK(r.out.find("\"tiff\" is not png, exr, svg or pdf") != std::string::npos);
   CHECK_FALSE(figtest::fs::exists(dir / "cbasis.png"));
 }

@@ -16,12 +16,12 @@ std::vector<std::string> labels(const std::vector<Tick>& t) {
 TEST_CASE("nice ticks step 1, 2 or 5 times a power of ten and stay inside the range") {
   // [-0.2, 1.1] with about 6 ticks: span 1.3 / 6 = 0.217 -> step 0.2: -0.2, 0, ..., 1.0.
   auto t = nice_ticks(-0.2, 1.1, 6);
-  CHECK(labels(t) == std::vector<std::string>{"-0.2", "0.0", "0.2", "0.4", "0.6", "0.8", "1.0"});
+  CHECK(labels(t) == std::vector<std::string>{"\u22120.2", "0.0", "0.2", "0.4", "0.6", "0.8", "1.0"});
   // [0, 100] with about 5: step 20.
   CHECK(labels(nice_ticks(0, 100, 5)) == std::vector<std::string>{"0", "20", "40", "60", "80", "100"});
   // [-2, 2] with about 8: step 0.5.
   CHECK(nice_ticks(-2, 2, 8).size() == 9);
-  CHECK(nice_ticks(-2, 2, 8)[1].label == "-1.5");
+  CHECK(nice_ticks(-2, 2, 8)[1].label == "\u22121.5");  // the minus sign U+2212
   // Reversed ranges give the same ticks.
   CHECK(labels(nice_ticks(1.1, -0.2, 6)) == labels(t));
   // Tiny and huge spans.
@@ -42,11 +42,13 @@ TEST_CASE("forced tick steps and zero without a sign") {
   CHECK(format_number(-0.0, 1) == "0.0");
   CHECK(format_number(-1e-12, 2) == "0.00");
   CHECK(format_number(-2, 0) == "-2");
+  CHECK(tick_number(-2, 0) == "\xe2\x88\x92" "2");  // U+2212 in UTF-8
+  CHECK(tick_number(-0.0, 1) == "0.0");
 }
 
 TEST_CASE("log ticks are decades labelled with superscript markup") {
   auto t = log_ticks(1e-4, 1);
-  CHECK(labels(t) == std::vector<std::string>{"10^{-4}", "10^{-3}", "10^{-2}", "10^{-1}", "1"});
+  CHECK(labels(t) == std::vector<std::string>{"10^{\u22124}", "10^{\u22123}", "10^{\u22122}", "10^{\u22121}", "1"});
   CHECK(t[0].value == Approx(1e-4));
   // Less than a decade: ordinary ticks.
   CHECK(labels(log_ticks(2, 8)).front() == "2");

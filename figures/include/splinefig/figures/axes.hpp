@@ -34,10 +34,12 @@ struct Tick {
 std::vector<Tick> nice_ticks(double lo, double hi, double target, double step = 0);
 // The step nice_ticks would use.
 double nice_step(double lo, double hi, double target);
-// Decades 10^k inside [lo, hi] (lo, hi > 0), labelled "10^{k}" (label markup); falls back to
+// Decades 10^k inside [lo, hi] (lo, hi > 0), labelled "10^{k}" (label markup, a negative k with the minus sign U+2212); falls back to
 // nice_ticks when the range spans less than one decade.
 std::vector<Tick> log_ticks(double lo, double hi);
 // A number with `decimals` digits after the point ("-0" printed as "0").
 std::string format_number(double v, int decimals);
+// The same as a tick label: negative numbers with the minus sign U+2212, not a hyphen.
+std::string tick_number(double v, int decimals);
 
 }  // namespace splinefig::figures

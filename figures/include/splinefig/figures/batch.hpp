@@ -13,10 +13,12 @@ namespace splinefig::figures {
 
 struct BatchOptions {
   std::string out_dir;                       // must exist
-  std::vector<std::string> formats{"png"};   // file extensions: png, exr
+  std::vector<std::string> formats{"png"};   // file extensions: png, exr, svg, pdf (output.hpp)
   double scale = 1;                          // output pixels per spec pixel
   int threads = 0;                           // <= 0: all hardware threads
   std::string software;                      // image metadata ("splinefig 1.2.3")
+  double dpi = 0;                            // spec pixels per inch (output.hpp); 0: none
+  long long date = -1;                       // PDF creation date, seconds since 1970; none if < 0
 };
 
 struct BatchResult {

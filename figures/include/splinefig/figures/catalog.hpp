@@ -34,9 +34,23 @@ std::vector<FigureInfo> read_index_json(const std::string& text);
 // previous order.
 std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, const std::vector<FigureInfo>& rendered,
                                     const std::vector<SpecFile>& specs, const std::string& dir);
-// A self-contained gallery page: every figure with its title and caption. After loading
-// it marks each <img> with data-loaded="yes" or "no", and <body> with data-images-ok.
-std::string gallery_html(const std::vector<FigureInfo>& figures);
+// A self-contained gallery page, responsive from phones to wide screens: the figures in
+// sections (the memo's, the filters, the companion texts' by the name prefixes "filter-" and
+// "s00"), each with its title, its caption (markup as HTML: b_2 -> b<sub>2</sub>, \beta -> β),
+// links to every file written, the SVG as the high-DPI source when there is one; figures whose
+// caption says "at 1:1" are shown at their own pixel size. The footer gives the version and,
+// when `date` >= 0 (seconds since 1970, e.g. SOURCE_DATE_EPOCH), the date. After loading it
+// marks each <img> with data-loaded="yes" or "no", and <body> with data-images-ok and
+// data-overflow (whether the page is wider than the window).
+struct GalleryOptions {
+  std::string version;  // "0.1.0"
+  long long date = -1;
+};
+std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOptions& options = {});
+
+// A label's markup (figures' rich text: _x, ^{..}, \name, $..$) as HTML: <sub>, <sup>, <i>
+// and the UTF-8 symbols; text that is not valid markup is escaped as it is.
+std::string markup_html(const std::string& markup);
 
 // Writes `text` to `path` atomically (write_file_atomically, image/atomic_file.hpp); throws
 // std::runtime_error naming the path on failure.

@@ -48,6 +48,14 @@ struct RenderedFigure {
 // element cannot be read.
 RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& options = {});
 
+// The figure as a renderer scene (what render_figure rasterizes, and what vector/ writes as
+// SVG or PDF), at `scale` output pixels per spec pixel.
+struct FigureScene {
+  render::Scene scene;
+  FigureInfo info;
+};
+FigureScene figure_scene(const FigureSpec& spec, double scale = 1);
+
 // The layout alone (no rasterization): the same info render_figure() reports.
 FigureInfo layout_figure(const FigureSpec& spec, double scale = 1);
 

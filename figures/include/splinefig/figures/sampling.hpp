@@ -8,9 +8,11 @@
 // from the Horner coefficients. On log axes the pieces are split recursively until the
 // midpoints and quarter points lie within tol of their chords.
 #include <splinefig/figures/axes.hpp>
+#include <splinefig/renderer/path.hpp>
 #include <splinefig/spline/curve.hpp>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace splinefig::figures {
@@ -30,6 +32,15 @@ std::vector<Vec2> sample_curve(const Curve& curve, const PixelMap& map, double t
 // [s0, s1] come back empty.
 std::vector<std::vector<Vec2>> sample_kernel(const Basis& basis, double s0, double s1, double scale,
                                              const PixelMap& map, double tolerance);
+
+// The exact pixel paths of the same curves: the pieces' Bezier control points (spline/
+// bezier_form.hpp) mapped by the affine map, which maps Bezier curves exactly. Degree 1 pieces
+// are lines, 2 quadratics (stored as their exact cubics), 3 cubics. None (nullopt) on log axes
+// or for degrees above 3, which keep their polylines.
+std::optional<render::Path> curve_path(const Curve& curve, const PixelMap& map);
+// One path per piece, as sample_kernel's polylines (the zero parts included).
+std::optional<std::vector<render::Path>> kernel_paths(const Basis& basis, double s0, double s1, double scale,
+                                                      const PixelMap& map);
 
 // Any smooth map u -> pixels on [u0, u1], cut into chords within `tolerance` of it by
 // recursive halving until the midpoint and quarter points of every chord are that close (at

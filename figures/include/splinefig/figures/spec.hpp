@@ -45,8 +45,9 @@ struct Pen {
 
 struct Font {
   double size = 13;
-  Color color{0.0331048f, 0.0331048f, 0.0331048f, 1};  // #333333 in linear light
+  Color color{0.0103298f, 0.0103298f, 0.0103298f, 1};  // #1a1a1a in linear light
   bool bold = false;
+  std::optional<render::FontFamily> family;  // unset: the figure's font_family
 };
 
 struct TextAnchor {
@@ -333,6 +334,7 @@ struct AxisSpec {
   std::optional<std::array<double, 2>> range;  // unset: from the data
   Scale scale = Scale::Linear;
   std::string label;
+  bool label_rotated = false;                   // y only: the label reads upwards beside the axis
   std::optional<std::vector<double>> ticks;     // unset: nice 1-2-5 ticks; empty: none
   std::vector<std::string> tick_labels;         // with explicit ticks only
   std::optional<double> tick_step;              // force the step of automatic ticks
@@ -373,6 +375,7 @@ struct FigureSpec {
   std::string caption;  // gallery and index only
   bool show_title = true;
   double title_size = 18;
+  render::FontFamily font_family = render::FontFamily::Sans;  // of every text without its own
   Canvas canvas;
   Layout layout;
   std::vector<Item> items;  // in document order

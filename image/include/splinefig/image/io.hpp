@@ -52,6 +52,7 @@ struct WriteOptions {
   int bits = 8;              // integer formats: 8 or 16 (PNG); float formats are float32
   std::string software;      // "splinefig <version>" when empty
   std::string description;   // ImageDescription, e.g. the spec name; none when empty
+  double dpi = 0;            // pixels per inch (PNG pHYs, EXR/TIFF XResolution); none when 0
 };
 
 // Writes `im` to `path`, the format chosen by the extension:

@@ -55,18 +55,37 @@ enum class Marker { Circle, Square, Diamond, Cross, Plus };
 enum class HAlign { Left, Center, Right };
 enum class VAlign { Baseline, Middle, Top, Bottom };
 
+// Text is UTF-8, set in a DejaVu face (text.hpp: the faces, their lookup and fallback), shaped
+// by HarfBuzz and drawn as glyph outlines by the same exact-area rasterizer as every shape.
+enum class FontFamily { Sans, Serif, Mono };
+enum class FontWeight { Normal, Bold };
+
 struct TextStyle {
-  double size = 14.0;  // font size in pixels
+  double size = 14.0;  // font size (the em) in pixels
   Color color{0, 0, 0, 1};
-  HAlign halign = HAlign::Left;
-  VAlign valign = VAlign::Baseline;
-  std::string font = "DejaVuSans";  // OpenImageIO font name
+  HAlign halign = HAlign::Left;      // by the advance width: Left puts the pen origin on the anchor
+  VAlign valign = VAlign::Baseline;  // Top/Bottom/Middle: by the ink above and below the baseline
+  FontFamily family = FontFamily::Sans;
+  FontWeight weight = FontWeight::Normal;
+  bool italic = false;  // the Oblique (Sans, Mono) or Italic (Serif) face
+  double angle = 0;     // degrees, counter-clockwise as seen on the canvas, about the anchor
 };
 
+// The advance width of the shaped string and the ink above (ascent) and below (descent) the
+// baseline, in pixels, unrotated. Throws std::invalid_argument for text that is not valid
+// UTF-8 or a character no DejaVu face has.
 struct TextExtent {
   double width = 0, ascent = 0, descent = 0;  // pixels
 };
 TextExtent measure_text(std::string_view text, const TextStyle& style);
+
+class Path;  // path.hpp: lines and cubic Beziers
+class SceneVisitor;
+
+// The outline of a polygonal marker (square, diamond, plus, cross) of overall size `size`
+// (side, or arm span; plus and cross arms are size/4 thick) centred at `centre`, as one closed
+// contour. Circle markers are disks of diameter `size`: empty.
+std::vector<Vec2> marker_polygon(Marker shape, Vec2 centre, double size);
 
 // A drawing: a display list, rasterized at once (by tiles or bands, on any number of
 // threads, with byte-identical results). Items are composited in the order added.
@@ -79,6 +98,11 @@ class Scene {
   void fill_circle(Vec2 centre, double radius, Color color);
   void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color);
   void marker(Marker shape, Vec2 centre, double size, Color fill);
+  // A path (path.hpp) filled, or stroked as the union of its pieces like a polyline. It is
+  // flattened within the arc tolerance (1e-4 px) when the scene is rasterized, so a cubic
+  // costs no more than the polyline it becomes, and a vector writer keeps its Beziers.
+  void fill_path(const Path& path, FillRule rule, Color color);
+  void stroke_path(const Path& path, const StrokeStyle& style, Color color);
   void text(std::string_view text, Vec2 anchor, const TextStyle& style);
   // A raster image (linear RGBA, associated alpha: the form rasterize returns) drawn into the
   // rectangle with corners p0 and p1: each canvas pixel whose centre lies inside samples the
@@ -89,6 +113,12 @@ class Scene {
 
   int width() const { return width_; }
   int height() const { return height_; }
+  Color background() const { return background_; }
+  const Kernel& filter() const { return filter_; }
+
+  // Every recorded item, in drawing order, as the call that recorded it (for writers of
+  // other formats: vector/).
+  void visit(SceneVisitor& v) const;
 
   struct Item;  // defined by the implementation
   const std::vector<Item>& items() const;
@@ -103,6 +133,23 @@ class Scene {
   Kernel filter_;
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
+};
+
+// What Scene::visit reports: one call per item, with the arguments the item was recorded
+// with (validated; images as recorded: linear RGBA, associated alpha).
+class SceneVisitor {
+ public:
+  virtual ~SceneVisitor() = default;
+  virtual void stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color) = 0;
+  virtual void fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) = 0;
+  virtual void fill_path(const Path& path, FillRule rule, Color color) = 0;
+  virtual void stroke_path(const Path& path, const StrokeStyle& style, Color color) = 0;
+  virtual void fill_circle(Vec2 centre, double radius, Color color) = 0;
+  virtual void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) = 0;
+  virtual void marker(Marker shape, Vec2 centre, double size, Color fill) = 0;
+  // `outline`: the glyph outlines the raster fills (text_path of text, anchor and style).
+  virtual void text(std::string_view text, Vec2 anchor, const TextStyle& style, const Path& outline) = 0;
+  virtual void image(const Image& image, Vec2 p0, Vec2 p1, Scene::Sampling sampling) = 0;
 };
 
 // The picture as a linear-light RGBA image (associated alpha, channels R, G, B, A).

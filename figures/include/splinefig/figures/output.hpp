@@ -1,0 +1,36 @@
+#pragma once
+// Writing a figure in the formats splinefig knows: PNG and EXR (the rasterized scene), SVG and
+// PDF (the scene itself, vector/). One rule of size for all (docs/figures.md, "Print and web
+// sizes"): `scale` is the number of output pixels per spec pixel, `dpi` the number of spec
+// pixels per inch. So a raster file has scale * dpi pixels per inch (PNG pHYs, EXR
+// XResolution), a PDF page is canvas * 72 / dpi points, an SVG canvas * 96 / dpi CSS px.
+#include <splinefig/figures/figure.hpp>
+
+#include <optional>
+#include <string>
+
+namespace splinefig::figures {
+
+// The formats, as file extensions.
+bool is_figure_format(const std::string& ext);  // png, exr, svg, pdf
+inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
+
+struct FigureFileOptions {
+  double scale = 1;      // the scene's output pixels per spec pixel
+  double dpi = 0;        // spec pixels per inch; 0: none written (vector files: 96, the CSS pixel)
+  int threads = 0;       // rasterizer threads
+  std::string software;  // "splinefig 1.2.3"
+  std::string title;     // image description, SVG title, PDF title
+  long long date = -1;   // PDF creation date (seconds since 1970), none when negative
+};
+
+// Writes `fig` to `path` as `format` (one of is_figure_format). `raster` caches the
+// rasterized scene between calls for the same figure (PNG and EXR share it). Throws
+// UnwritableFile naming the path.
+void write_figure_file(const FigureScene& fig, const std::string& path, const std::string& format,
+                       const FigureFileOptions& options, std::optional<Image>& raster);
+
+// SOURCE_DATE_EPOCH as seconds, or -1 when it is unset or not a number.
+long long source_date_epoch();
+
+}  // namespace splinefig::figures

@@ -1,0 +1,148 @@
+// The vector files themselves: exact curves as a handful of Bezier commands, sizes by --dpi,
+// deterministic bytes, bad flags.
+#include "figures/support.hpp"
+#include "skip.hpp"
+
+#include <splinefig/figures/catalog.hpp>
+#include <splinefig/figures/figure.hpp>
+#include <splinefig/figures/spec.hpp>
+#include <splinefig/renderer/path.hpp>
+#include <splinefig/vector/vector.hpp>
+
+#include <OpenImageIO/imageio.h>
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <regex>
+
+namespace fig = splinefig::figures;
+
+namespace {
+
+struct PathCounts {
+  int cubics = 0, lines = 0;
+};
+
+// The stroked paths of an SVG that are not text (text paths carry aria-label), in order.
+std::vector<PathCounts> stroked_paths(const std::string& svg) {
+  std::vector<PathCounts> out;
+  const std::regex path("<path d=\"([^\"]*)\" fill=\"none\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it) {
+    const std::string d = (*it)[1];
+    out.push_back({static_cast<int>(std::count(d.begin(), d.end(), 'C')), static_cast<int>(std::count(d.begin(), d.end(), 'L'))});
+  }
+  return out;
+}
+
+std::string svg_of(const std::string& name) {
+  const fig::FigureSpec spec = fig::load_spec(fig::builtin_specs_dir() + "/" + name + ".toml");
+  return splinefig::vector::to_svg(fig::figure_scene(spec, 1).scene);
+}
+
+}  // namespace
+
+TEST_CASE("a kernel in SVG is its four cubic pieces, not a polyline") {
+  // cbasis: the Catmull-Rom kernel in two colours, c_3 c_2 and c_1 c_0, one C command per piece.
+  int cubics = 0;
+  for (const PathCounts& p : stroked_paths(svg_of("cbasis"))) {
+    cubics += p.cubics;
+    if (p.cubics > 0) CHECK(p.lines == 0);
+    CHECK(p.lines <= 8);  // axes, ticks, rules: a few lines each
+  }
+  CHECK(cubics == 4);
+}
+
+TEST_CASE("spline curves in SVG: one Bezier command per segment") {
+  // ends: six knots; open ends give 6 - 3 = 3 segments, doubled 6 + 2 - 3 = 5, closed 6. The
+  // closed Catmull-Rom curve leaves its plot box, so it is clipped there as a polyline; the
+  // other five are exact.
+  std::vector<int> counts;
+  for (const PathCounts& p : stroked_paths(svg_of("ends")))
+    if (p.cubics > 0) {
+      CHECK(p.lines == 0);
+      counts.push_back(p.cubics);
+    }
+  std::sort(counts.begin(), counts.end());
+  CHECK(counts == std::vector<int>{3, 3, 5, 5, 6});
+}
+
+TEST_CASE("SVG keeps each label's string next to its outline") {
+  const std::string svg = svg_of("cbasis");
+  CHECK(svg.find("<title>cbasis: ") == std::string::npos);  // the file title is the caller's
+  CHECK(svg.find("aria-label=\"Cardinal spline basis function") != std::string::npos);
+  CHECK(svg.find("<text") == std::string::npos);  // outlines: no fonts needed
+}
+
+TEST_CASE("dpi: PNG pHYs, EXR resolution, PDF page and SVG size follow one rule") {
+  const auto dir = figtest::scratch("vector-dpi");
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/cbasis.toml";  // 800 x 500
+  auto render = [&](const std::string& out, const std::string& flags) {
+    const auto r = figtest::run(figtest::exe() + " render " + spec + " -o " + (dir / out).string() + " " + flags);
+    INFO(r.out);
+    REQUIRE(r.code == 0);
+    return (dir / out).string();
+  };
+  auto resolution = [](const std::string& file) {
+    auto in = OIIO::ImageInput::open(file);
+    REQUIRE(in);
+    return in->spec().get_float_attribute("XResolution");
+  };
+  // 300 spec pixels per inch at scale 2: 600 image pixels per inch (pHYs stores pixels per
+  // metre, 23622, which reads back as 599.9988).
+  CHECK(resolution(render("c.png", "--dpi 300 --scale 2")) == Approx(600).epsilon(1e-5));
+  CHECK(resolution(render("c.exr", "--dpi 300")) == Approx(300));
+  // 800 / 300 inches = 192 points, 500 / 300 = 120; 96 CSS px per inch: 256 x 160 px.
+  const std::string pdf = figtest::read_file(render("c.pdf", "--dpi 300 --scale 2"));
+  CHECK(pdf.find("/MediaBox [ 0 0 192 120 ]") != std::string::npos);
+  const std::string svg = figtest::read_file(render("c.svg", "--dpi 300"));
+  CHECK(svg.find("width=\"256\" height=\"160\" viewBox=\"0 0 800 500\"") != std::string::npos);
+  // Without --dpi: no pHYs, the CSS pixel for vector files (a 1x figure is 800 px, 600 pt).
+  CHECK(resolution(render("d.png", "")) == 0);
+  CHECK(figtest::read_file(render("d.pdf", "--scale 2")).find("/MediaBox [ 0 0 600 375 ]") != std::string::npos);
+  CHECK(figtest::read_file(render("d.svg", "--scale 2")).find("width=\"800\" height=\"500\" viewBox=\"0 0 1600 1000\"") !=
+        std::string::npos);
+}
+
+TEST_CASE("bad --dpi and unknown formats are one-line errors that write nothing") {
+  const auto dir = figtest::scratch("vector-bad");
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/cbasis.toml";
+  for (const std::string dpi : {"0.5", "20000", "-3", "nan"}) {
+    const auto r = figtest::run(figtest::exe() + " render " + spec + " -o " + (dir / "x.svg").string() + " --dpi " + dpi);
+    INFO(dpi << ": " << r.out);
+    CHECK(r.code != 0);
+    CHECK(r.out.find("--dpi") != std::string::npos);
+    CHECK_FALSE(figtest::fs::exists(dir / "x.svg"));
+  }
+  const auto r = figtest::run(figtest::exe() + " figures --out " + dir.string() + " --only cbasis --format svg,eps");
+  CHECK(r.code != 0);
+  CHECK(r.out.find("\"eps\" is not png, exr, svg or pdf") != std::string::npos);
+  CHECK_FALSE(figtest::fs::exists(dir / "cbasis.svg"));
+}
+
+TEST_CASE("vector files are the same bytes for any thread count, the PDF date from SOURCE_DATE_EPOCH") {
+  const auto dir = figtest::scratch("vector-same");
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/filter-zoneplate.toml";
+  std::string bytes[2][2];
+  for (int k = 0; k < 2; ++k)
+    for (int f = 0; f < 2; ++f) {
+      const std::string out = (dir / (std::string(f ? "z.pdf" : "z.svg"))).string();
+      const auto r = figtest::run("SOURCE_DATE_EPOCH=1700000000 " + figtest::exe() + " render " + spec + " -o " + out +
+                                  " --threads " + (k ? "1" : "2"));
+      REQUIRE(r.code == 0);
+      bytes[k][f] = figtest::read_file(out);
+    }
+  CHECK(bytes[0][0] == bytes[1][0]);
+  CHECK(bytes[0][1] == bytes[1][1]);
+  // 1700000000 s is 2023-11-14 22:13:20 UTC.
+  CHECK(bytes[0][1].find("20231114221320") != std::string::npos);
+  // The zone plate is embedded once, as PNG at its own size.
+  CHECK(bytes[0][0].find("href=\"data:image/png;base64,") != std::string::npos);
+}
+
+TEST_CASE("write_vector names the file it cannot write and accepts only .svg and .pdf") {
+  splinefig::render::Scene s(10, 10);
+  CHECK_THROWS_WITH(splinefig::vector::write_vector("/nonexistent-dir/x.svg", s), Catch::Contains("/nonexistent-dir/x.svg"));
+  CHECK_THROWS_WITH(splinefig::vector::write_vector("x.eps", s), Catch::Contains("x.eps"));
+  CHECK(splinefig::vector::is_vector_file("A.SVG"));
+  CHECK_FALSE(splinefig::vector::is_vector_file("a.png"));
+}

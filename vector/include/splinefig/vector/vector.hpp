@@ -1,0 +1,40 @@
+#pragma once
+// A renderer Scene as a vector file: SVG (written directly) or PDF (Cairo's PDF surface), with
+// the same size, colours (sRGB), z-order and geometry as the raster picture. Paths keep their
+// cubic Beziers, so exact spline pieces stay exact; strokes use the format's own width, joins,
+// caps, miter limit and dashes (both formats paint a stroke as one shape, the union of its
+// pieces, as the rasterizer does); circles are circles; raster items are embedded as PNG at
+// their own pixel size. See docs/vector.md.
+#include <splinefig/renderer/renderer.hpp>
+
+#include <string>
+#include <vector>
+
+namespace splinefig::vector {
+
+struct Options {
+  // Pixels per inch of the scene's pixels: the physical size is width/dpi inches. 0: the CSS
+  // pixel (96 per inch). An SVG is width * 96 / dpi CSS px wide (its viewBox is the scene's
+  // pixels), a PDF page width * 72 / dpi points.
+  double dpi = 0;
+  std::string title;    // SVG <title>, PDF Title
+  std::string creator;  // PDF Creator ("splinefig 1.2.3")
+  // PDF CreationDate as seconds since 1970 (SOURCE_DATE_EPOCH), or none when negative: the same
+  // scene gives the same bytes.
+  long long date = -1;
+};
+
+// The bounds of Options::dpi (0 aside).
+inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
+
+std::string to_svg(const render::Scene& scene, const Options& options = {});
+std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& options = {});
+
+// True for a path ending in .svg or .pdf (any case).
+bool is_vector_file(const std::string& path);
+
+// Writes to_svg or to_pdf by the extension, atomically (image/atomic_file.hpp). Throws
+// UnwritableFile naming the path, std::invalid_argument for a dpi out of bounds.
+void write_vector(const std::string& path, const render::Scene& scene, const Options& options = {});
+
+}  // namespace splinefig::vector

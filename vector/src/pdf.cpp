@@ -1,0 +1,190 @@
+// PDF through Cairo's PDF surface: the scene drawn in pixel units on a page of
+// width * 72 / dpi points.
+#include "raster.hpp"
+
+#include <splinefig/vector/vector.hpp>
+
+#include <cairo-pdf.h>
+
+#include <ctime>
+#include <stdexcept>
+#include <string>
+
+namespace splinefig::vector {
+namespace {
+
+using render::Vec2;
+
+class PdfWriter final : public render::SceneVisitor {
+ public:
+  explicit PdfWriter(cairo_t* cr) : cr_(cr) {}
+
+  void stroke_polyline(std::span<const Vec2> pts, bool closed, const render::StrokeStyle& st, render::Color c) override {
+    if (pts.empty() || !(st.width > 0) || c.a <= 0) return;
+    cairo_new_path(cr_);
+    polyline(pts, closed);
+    stroke(st, c);
+  }
+  void fill_polygon(const std::vector<std::vector<Vec2>>& contours, render::FillRule rule, render::Color c) override {
+    if (c.a <= 0) return;
+    cairo_new_path(cr_);
+    for (const auto& ctr : contours)
+      if (!ctr.empty()) polyline(ctr, true);
+    fill(rule, c);
+  }
+  void fill_path(const render::Path& p, render::FillRule rule, render::Color c) override {
+    if (p.empty() || c.a <= 0) return;
+    cairo_new_path(cr_);
+    path(p);
+    fill(rule, c);
+  }
+  void stroke_path(const render::Path& p, const render::StrokeStyle& st, render::Color c) override {
+    if (p.empty() || !(st.width > 0) || c.a <= 0) return;
+    cairo_new_path(cr_);
+    path(p);
+    stroke(st, c);
+  }
+  void fill_circle(Vec2 ctr, double r, render::Color c) override {
+    if (!(r > 0) || c.a <= 0) return;
+    cairo_new_path(cr_);
+    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * 3.14159265358979323846);
+    cairo_close_path(cr_);
+    fill(render::FillRule::NonZero, c);
+  }
+  void stroke_circle(Vec2 ctr, double r, const render::StrokeStyle& st, render::Color c) override {
+    if (!(r > 0) || !(st.width > 0) || c.a <= 0) return;
+    cairo_new_path(cr_);
+    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * 3.14159265358979323846);
+    cairo_close_path(cr_);
+    stroke(st, c);
+  }
+  void marker(render::Marker m, Vec2 ctr, double size, render::Color c) override {
+    if (m == render::Marker::Circle) return fill_circle(ctr, 0.5 * size, c);
+    if (!(size > 0)) return;
+    fill_polygon({render::marker_polygon(m, ctr, size)}, render::FillRule::NonZero, c);
+  }
+  void text(std::string_view s, Vec2, const render::TextStyle& style, const render::Path& outline) override {
+    (void)s;
+    fill_path(outline, render::FillRule::NonZero, style.color);
+  }
+  void image(const Image& im, Vec2 p0, Vec2 p1, render::Scene::Sampling smp) override {
+    cairo_surface_t* s = detail::image_surface(im);
+    cairo_save(cr_);
+    cairo_translate(cr_, p0.x, p0.y);
+    cairo_scale(cr_, (p1.x - p0.x) / im.width, (p1.y - p0.y) / im.height);
+    cairo_set_source_surface(cr_, s, 0, 0);
+    cairo_pattern_t* pat = cairo_get_source(cr_);
+    cairo_pattern_set_filter(pat, smp == render::Scene::Sampling::Nearest ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_BILINEAR);
+    cairo_pattern_set_extend(pat, CAIRO_EXTEND_PAD);
+    cairo_new_path(cr_);
+    cairo_rectangle(cr_, 0, 0, im.width, im.height);
+    cairo_fill(cr_);
+    cairo_restore(cr_);
+    cairo_surface_destroy(s);
+  }
+
+ private:
+  cairo_t* cr_;
+
+  void polyline(std::span<const Vec2> pts, bool closed) {
+    cairo_move_to(cr_, pts[0].x, pts[0].y);
+    for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr_, pts[i].x, pts[i].y);
+    if (closed) cairo_close_path(cr_);
+  }
+  void path(const render::Path& p) {
+    std::size_t k = 0;
+    const auto& q = p.points();
+    for (render::Path::Verb v : p.verbs()) {
+      switch (v) {
+        case render::Path::Verb::Move: cairo_move_to(cr_, q[k].x, q[k].y), ++k; break;
+        case render::Path::Verb::Line: cairo_line_to(cr_, q[k].x, q[k].y), ++k; break;
+        case render::Path::Verb::Cubic:
+          cairo_curve_to(cr_, q[k].x, q[k].y, q[k + 1].x, q[k + 1].y, q[k + 2].x, q[k + 2].y);
+          k += 3;
+          break;
+        case render::Path::Verb::Close: cairo_close_path(cr_); break;
+      }
+    }
+  }
+  void source(render::Color c) {
+    const detail::Srgb s = detail::to_srgb(c);
+    cairo_set_source_rgba(cr_, s.r, s.g, s.b, s.a);
+  }
+  void fill(render::FillRule rule, render::Color c) {
+    source(c);
+    cairo_set_fill_rule(cr_, rule == render::FillRule::EvenOdd ? CAIRO_FILL_RULE_EVEN_ODD : CAIRO_FILL_RULE_WINDING);
+    cairo_fill(cr_);
+  }
+  void stroke(const render::StrokeStyle& st, render::Color c) {
+    source(c);
+    cairo_set_line_width(cr_, st.width);
+    cairo_set_line_join(cr_, st.join == render::Join::Round   ? CAIRO_LINE_JOIN_ROUND
+                             : st.join == render::Join::Bevel ? CAIRO_LINE_JOIN_BEVEL
+                                                              : CAIRO_LINE_JOIN_MITER);
+    cairo_set_miter_limit(cr_, st.miter_limit);
+    cairo_set_line_cap(cr_, st.cap == render::Cap::Round    ? CAIRO_LINE_CAP_ROUND
+                            : st.cap == render::Cap::Square ? CAIRO_LINE_CAP_SQUARE
+                                                            : CAIRO_LINE_CAP_BUTT);
+    double period = 0;
+    for (double d : st.dashes) period += d;
+    if (!st.dashes.empty() && period > 0)
+      cairo_set_dash(cr_, st.dashes.data(), static_cast<int>(st.dashes.size()), st.dash_offset);
+    else
+      cairo_set_dash(cr_, nullptr, 0, 0);
+    cairo_stroke(cr_);
+  }
+};
+
+std::string pdf_date(long long t) {
+  const std::time_t tt = static_cast<std::time_t>(t);
+  std::tm tm{};
+  gmtime_r(&tt, &tm);
+  char buf[40];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& o) {
+  const double dpi = o.dpi > 0 ? o.dpi : 96.0;
+  const double k = 72.0 / dpi;  // points per pixel
+  std::vector<unsigned char> bytes;
+  auto write = [](void* closure, const unsigned char* data, unsigned int n) {
+    auto* v = static_cast<std::vector<unsigned char>*>(closure);
+    v->insert(v->end(), data, data + n);
+    return CAIRO_STATUS_SUCCESS;
+  };
+  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(write, &bytes, scene.width() * k, scene.height() * k);
+  // The creation date is the given one or the epoch, never the clock: same scene, same bytes.
+  const std::string date = pdf_date(o.date >= 0 ? o.date : 0);
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
+  if (!o.title.empty()) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, o.title.c_str());
+  if (!o.creator.empty()) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, o.creator.c_str());
+  cairo_t* cr = cairo_create(surface);
+  cairo_scale(cr, k, k);
+  const render::Color bg = scene.background();
+  if (bg.a > 0) {
+    const detail::Srgb s = detail::to_srgb(bg);
+    cairo_set_source_rgba(cr, s.r, s.g, s.b, s.a);
+    cairo_paint(cr);
+  }
+  std::string error;
+  try {
+    PdfWriter w(cr);
+    scene.visit(w);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  const cairo_status_t st = cairo_status(cr);
+  cairo_destroy(cr);
+  cairo_surface_finish(surface);
+  const cairo_status_t sst = cairo_surface_status(surface);
+  cairo_surface_destroy(surface);
+  if (!error.empty()) throw std::runtime_error(error);
+  if (st != CAIRO_STATUS_SUCCESS || sst != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(std::string("PDF: ") + cairo_status_to_string(st != CAIRO_STATUS_SUCCESS ? st : sst));
+  return bytes;
+}
+
+}  // namespace splinefig::vector

@@ -1,0 +1,251 @@
+// SVG written directly: one element per scene item, numbers to 1/1000 px, no styles or
+// definitions that the picture does not need (docs/vector.md says why not Cairo's SVG surface).
+#include "raster.hpp"
+
+#include <splinefig/vector/vector.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace splinefig::vector {
+namespace {
+
+using render::Vec2;
+
+// Shortest decimal of v to 3 places ("12.5", "-0.001", "3").
+void num(std::string& out, double v) {
+  char buf[40];
+  double r = std::round(v * 1000) / 1000;
+  if (r == 0) r = 0;  // no "-0"
+  int n = std::snprintf(buf, sizeof buf, "%.3f", r);
+  while (n > 0 && buf[n - 1] == '0') --n;
+  if (n > 0 && buf[n - 1] == '.') --n;
+  out.append(buf, static_cast<std::size_t>(n));
+}
+
+void point(std::string& out, Vec2 p) {
+  num(out, p.x);
+  out += ' ';
+  num(out, p.y);
+}
+
+std::string escape(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+const char* base64_chars = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+std::string base64(const std::vector<unsigned char>& in) {
+  std::string out;
+  out.reserve((in.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < in.size(); i += 3) {
+    const unsigned v = (in[i] << 16) | ((i + 1 < in.size() ? in[i + 1] : 0) << 8) | (i + 2 < in.size() ? in[i + 2] : 0);
+    out += base64_chars[(v >> 18) & 63];
+    out += base64_chars[(v >> 12) & 63];
+    out += i + 1 < in.size() ? base64_chars[(v >> 6) & 63] : '=';
+    out += i + 2 < in.size() ? base64_chars[v & 63] : '=';
+  }
+  return out;
+}
+
+class SvgWriter final : public render::SceneVisitor {
+ public:
+  std::string out;
+
+  void stroke_polyline(std::span<const Vec2> pts, bool closed, const render::StrokeStyle& st, render::Color c) override {
+    if (pts.empty() || !(st.width > 0) || c.a <= 0) return;
+    out += "<path d=\"";
+    polyline(pts, closed);
+    out += "\" fill=\"none\"";
+    stroke_attributes(st, c);
+    out += "/>\n";
+  }
+  void fill_polygon(const std::vector<std::vector<Vec2>>& contours, render::FillRule rule, render::Color c) override {
+    if (c.a <= 0) return;
+    std::string d;
+    std::swap(d, out);
+    for (const auto& ctr : contours)
+      if (!ctr.empty()) polyline(ctr, true);
+    std::swap(d, out);
+    if (d.empty()) return;
+    out += "<path d=\"" + d + "\"";
+    fill_attributes(rule, c);
+    out += "/>\n";
+  }
+  void fill_path(const render::Path& p, render::FillRule rule, render::Color c) override {
+    if (p.empty() || c.a <= 0) return;
+    out += "<path d=\"";
+    path(p);
+    out += "\"";
+    fill_attributes(rule, c);
+    out += "/>\n";
+  }
+  void stroke_path(const render::Path& p, const render::StrokeStyle& st, render::Color c) override {
+    if (p.empty() || !(st.width > 0) || c.a <= 0) return;
+    out += "<path d=\"";
+    path(p);
+    out += "\" fill=\"none\"";
+    stroke_attributes(st, c);
+    out += "/>\n";
+  }
+  void fill_circle(Vec2 ctr, double r, render::Color c) override {
+    if (!(r > 0) || c.a <= 0) return;
+    circle(ctr, r);
+    fill_attributes(render::FillRule::NonZero, c);
+    out += "/>\n";
+  }
+  void stroke_circle(Vec2 ctr, double r, const render::StrokeStyle& st, render::Color c) override {
+    if (!(r > 0) || !(st.width > 0) || c.a <= 0) return;
+    circle(ctr, r);
+    out += " fill=\"none\"";
+    stroke_attributes(st, c);
+    out += "/>\n";
+  }
+  void marker(render::Marker m, Vec2 ctr, double size, render::Color c) override {
+    if (m == render::Marker::Circle) return fill_circle(ctr, 0.5 * size, c);
+    if (!(size > 0)) return;
+    fill_polygon({render::marker_polygon(m, ctr, size)}, render::FillRule::NonZero, c);
+  }
+  void text(std::string_view s, Vec2, const render::TextStyle& style, const render::Path& outline) override {
+    if (outline.empty() || style.color.a <= 0) return;
+    const std::string label = escape(s);
+    out += "<path aria-label=\"" + label + "\" d=\"";
+    path(outline);
+    out += "\"";
+    fill_attributes(render::FillRule::NonZero, style.color);
+    out += "><title>" + label + "</title></path>\n";
+  }
+  void image(const Image& im, Vec2 p0, Vec2 p1, render::Scene::Sampling smp) override {
+    // The image's own pixels, mapped onto the rectangle (p0 is the image's top-left corner).
+    out += "<image width=\"" + std::to_string(im.width) + "\" height=\"" + std::to_string(im.height) +
+           "\" preserveAspectRatio=\"none\" transform=\"matrix(";
+    num(out, (p1.x - p0.x) / im.width);
+    out += " 0 0 ";
+    num(out, (p1.y - p0.y) / im.height);
+    out += ' ';
+    point(out, p0);
+    out += ")\"";
+    if (smp == render::Scene::Sampling::Nearest) out += " image-rendering=\"optimizeSpeed\" style=\"image-rendering:pixelated\"";
+    out += " href=\"data:image/png;base64," + base64(detail::png_bytes(im)) + "\"/>\n";
+  }
+
+ private:
+  void polyline(std::span<const Vec2> pts, bool closed) {
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      out += i == 0 ? "M" : "L";
+      point(out, pts[i]);
+    }
+    if (closed) out += "Z";
+  }
+  void path(const render::Path& p) {
+    std::size_t k = 0;
+    const auto& pts = p.points();
+    for (render::Path::Verb v : p.verbs()) {
+      switch (v) {
+        case render::Path::Verb::Move: out += "M"; point(out, pts[k++]); break;
+        case render::Path::Verb::Line: out += "L"; point(out, pts[k++]); break;
+        case render::Path::Verb::Cubic:
+          out += "C";
+          point(out, pts[k]), out += ' ', point(out, pts[k + 1]), out += ' ', point(out, pts[k + 2]);
+          k += 3;
+          break;
+        case render::Path::Verb::Close: out += "Z"; break;
+      }
+    }
+  }
+  void circle(Vec2 c, double r) {
+    out += "<circle cx=\"";
+    num(out, c.x);
+    out += "\" cy=\"";
+    num(out, c.y);
+    out += "\" r=\"";
+    num(out, r);
+    out += "\"";
+  }
+  void colour(const char* what, render::Color c) {
+    out += std::string(" ") + what + "=\"" + detail::hex(c) + "\"";
+    if (c.a < 1) {
+      out += std::string(" ") + what + "-opacity=\"";
+      num(out, c.a);
+      out += "\"";
+    }
+  }
+  void fill_attributes(render::FillRule rule, render::Color c) {
+    if (detail::hex(c) != "#000000" || c.a < 1) colour("fill", c);
+    if (rule == render::FillRule::EvenOdd) out += " fill-rule=\"evenodd\"";
+  }
+  void stroke_attributes(const render::StrokeStyle& st, render::Color c) {
+    colour("stroke", c);
+    if (st.width != 1) {
+      out += " stroke-width=\"";
+      num(out, st.width);
+      out += "\"";
+    }
+    if (st.join == render::Join::Round) out += " stroke-linejoin=\"round\"";
+    if (st.join == render::Join::Bevel) out += " stroke-linejoin=\"bevel\"";
+    if (st.join == render::Join::Miter && st.miter_limit != 4) {
+      out += " stroke-miterlimit=\"";
+      num(out, st.miter_limit);
+      out += "\"";
+    }
+    if (st.cap == render::Cap::Round) out += " stroke-linecap=\"round\"";
+    if (st.cap == render::Cap::Square) out += " stroke-linecap=\"square\"";
+    double period = 0;
+    for (double d : st.dashes) period += d;
+    if (!st.dashes.empty() && period > 0) {
+      out += " stroke-dasharray=\"";
+      for (std::size_t i = 0; i < st.dashes.size(); ++i) {
+        if (i) out += ' ';
+        num(out, st.dashes[i]);
+      }
+      out += "\"";
+      if (st.dash_offset != 0) {
+        out += " stroke-dashoffset=\"";
+        num(out, st.dash_offset);
+        out += "\"";
+      }
+    }
+  }
+};
+
+}  // namespace
+
+std::string to_svg(const render::Scene& scene, const Options& o) {
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
+  const int w = scene.width(), h = scene.height();
+  // CSS px, 96 to the inch.
+  const double css = o.dpi > 0 ? 96.0 / o.dpi : 1.0;
+  num(out, w * css);
+  out += "\" height=\"";
+  num(out, h * css);
+  out += "\"";
+  out += " viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) + "\">\n";
+  if (!o.title.empty()) out += "<title>" + escape(o.title) + "</title>\n";
+  const render::Color bg = scene.background();
+  if (bg.a > 0) {
+    out += "<rect width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) + "\" fill=\"" + detail::hex(bg) + "\"";
+    if (bg.a < 1) {
+      out += " fill-opacity=\"";
+      num(out, bg.a);
+      out += "\"";
+    }
+    out += "/>\n";
+  }
+  SvgWriter sw;
+  scene.visit(sw);
+  out += sw.out;
+  out += "</svg>\n";
+  return out;
+}
+
+}  // namespace splinefig::vector
