@@ -89,7 +89,8 @@ std::vector<Tick> log_ticks(double lo, double hi) {
   std::vector<Tick> ticks;
   for (int k = k0; k <= k1; ++k) {
     if ((k - k0) % every) continue;
-    std::string label = k == 0 ? "1" : k == 1 ? "10" : "10^{" + (k < 0 ? "\u2212" + std::to_string(-k) : std::to_string(k)) + "}";
+    // Every decade as a power, 10^0 and 10^1 too, so the labels read as one series.
+    std::string label = "10^{" + (k < 0 ? "\u2212" + std::to_string(-k) : std::to_string(k)) + "}";
     ticks.push_back({std::pow(10.0, k), label});
   }
   return ticks;

@@ -48,7 +48,7 @@ TEST_CASE("forced tick steps and zero without a sign") {
 
 TEST_CASE("log ticks are decades labelled with superscript markup") {
   auto t = log_ticks(1e-4, 1);
-  CHECK(labels(t) == std::vector<std::string>{"10^{\u22124}", "10^{\u22123}", "10^{\u22122}", "10^{\u22121}", "1"});
+  CHECK(labels(t) == std::vector<std::string>{"10^{\u22124}", "10^{\u22123}", "10^{\u22122}", "10^{\u22121}", "10^{0}"});
   CHECK(t[0].value == Approx(1e-4));
   // Less than a decade: ordinary ticks.
   CHECK(labels(log_ticks(2, 8)).front() == "2");

@@ -34,8 +34,9 @@ struct Tick {
 std::vector<Tick> nice_ticks(double lo, double hi, double target, double step = 0);
 // The step nice_ticks would use.
 double nice_step(double lo, double hi, double target);
-// Decades 10^k inside [lo, hi] (lo, hi > 0), labelled "10^{k}" (label markup, a negative k with the minus sign U+2212); falls back to
-// nice_ticks when the range spans less than one decade.
+// Decades 10^k inside [lo, hi] (lo, hi > 0), labelled "10^{k}" (label markup; 10^0 and 10^1
+// as powers too, a negative k with the minus sign U+2212); falls back to nice_ticks when the
+// range spans less than one decade.
 std::vector<Tick> log_ticks(double lo, double hi);
 // A number with `decimals` digits after the point ("-0" printed as "0").
 std::string format_number(double v, int decimals);
