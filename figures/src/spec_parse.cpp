@@ -193,10 +193,19 @@ ImageItem parse_image(TableReader& r, const ParseContext& ctx) {
 
 }  // namespace
 
-// Reads every [key] / [[key]] table as an item, with its source line (for document order).
+// An item with its source line (for document order) and its "FILE:LINE: KEY" (for messages).
+struct Placed {
+  size_t line;
+  Item item;
+  std::string origin;
+};
+
+// Reads every [key] / [[key]] table as an item.
 template <class F>
-static void collect(TableReader& r, std::string_view key, std::vector<std::pair<size_t, Item>>& out, F&& read) {
-  r.each_table(key, [&](TableReader& sub, const toml::table& t) { out.emplace_back(t.source().begin.line, read(sub, t)); });
+static void collect(TableReader& r, std::string_view key, std::vector<Placed>& out, F&& read) {
+  r.each_table(key, [&](TableReader& sub, const toml::table& t) {
+    out.push_back({t.source().begin.line, read(sub, t), sub.origin("")});
+  });
 }
 
 }  // namespace detail
@@ -263,7 +272,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
     TableReader l(*t[0], name, "layout");
     spec.layout = parse_layout(l);
   }
-  std::vector<std::pair<size_t, Item>> items;
+  std::vector<Placed> items;
   collect(r, "polyline", items, [](TableReader& s, const toml::table&) { return Item{parse_polyline(s)}; });
   collect(r, "polygon", items, [](TableReader& s, const toml::table&) { return Item{parse_polygon(s)}; });
   collect(r, "circle", items, [](TableReader& s, const toml::table&) { return Item{parse_circle(s)}; });
@@ -272,8 +281,11 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   collect(r, "image", items, [&](TableReader& s, const toml::table&) { return Item{parse_image(s, ctx)}; });
   collect(r, "axes", items, [&](TableReader& s, const toml::table&) { return Item{parse_axes(s, ctx)}; });
   r.finish();
-  std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [line, item] : items) spec.items.push_back(std::move(item));
+  std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
+  for (auto& placed : items) {
+    spec.items.push_back(std::move(placed.item));
+    spec.item_origins.push_back(std::move(placed.origin));
+  }
 
   place_panels(spec);
   return spec;

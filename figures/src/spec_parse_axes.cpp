@@ -4,6 +4,7 @@
 #include <splinefig/figures/palette.hpp>
 
 #include <algorithm>
+#include <map>
 
 namespace splinefig::figures::detail {
 namespace {
@@ -254,9 +255,11 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   }
 
   std::vector<std::pair<size_t, PlotElement>> elements;
+  std::map<size_t, std::string> origins;  // by source line; generated elements carry `where`
   auto each = [&](std::string_view key, auto&& read) {
     r.each_table(key, [&](TableReader& sub, const toml::table& t) {
       elements.emplace_back(t.source().begin.line, PlotElement{read(sub)});
+      origins[t.source().begin.line] = sub.origin("");
     });
   };
   each("curve", parse_curve);
@@ -273,7 +276,17 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   parse_generated_elements(r, elements);  // docs/companion.md, docs/resample.md
   r.finish();
   std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [line, e] : elements) ax.elements.push_back(std::move(e));
+  for (auto& [line, e] : elements) {
+    std::string origin = std::visit(
+        [](const auto& x) -> std::string {
+          if constexpr (requires { x.where; }) return x.where;
+          else return {};
+        },
+        e);
+    if (auto it = origins.find(line); origin.empty() && it != origins.end()) origin = it->second;
+    ax.elements.push_back(std::move(e));
+    ax.element_origins.push_back(origin.empty() ? ax.where + ": " + r.path() : origin);
+  }
 
   if (ax.y.scale == Scale::Log) {
     for (const auto& e : ax.elements)

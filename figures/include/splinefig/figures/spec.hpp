@@ -356,6 +356,9 @@ struct AxesSpec {
   std::optional<std::array<double, 4>> box;     // explicit pixel box [left, top, right, bottom]
   std::vector<PlotElement> elements;
   std::string where;  // "file:line" of the [axes] header, for messages
+  // "FILE:LINE: KEY" of each element's table (parallel to `elements`), naming it in errors
+  // found while drawing; may be shorter (then messages name the axes).
+  std::vector<std::string> element_origins;
 };
 
 using Item = std::variant<PolylineItem, PolygonItem, CircleItem, MarkerItem, TextItem, ImageItem, AxesSpec>;
@@ -376,6 +379,9 @@ struct FigureSpec {
   Canvas canvas;
   Layout layout;
   std::vector<Item> items;  // in document order
+  // "FILE:LINE: KEY" of each item's table (parallel to `items`), naming it in errors found
+  // while drawing; may be shorter (then messages name the file).
+  std::vector<std::string> item_origins;
 };
 
 // Reads and validates a spec file. Throws SpecFileError (one line: file, line, key).
