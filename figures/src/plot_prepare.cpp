@@ -42,8 +42,12 @@ PreparedAxes prepare_axes(const AxesSpec& ax) {
 }
 
 void sample_paths(PreparedAxes& prepared, const PixelMap& map, double tolerance) {
-  for (const auto& [index, path] : prepared.paths)
-    std::get<SeriesElement>(prepared.axes.elements[index]).points = sample_path(path, map, tolerance);
+  for (const auto& [index, path] : prepared.paths) {
+    const auto& origins = prepared.axes.element_origins;
+    naming_origin(index < origins.size() ? origins[index] : prepared.axes.where, [&] {
+      std::get<SeriesElement>(prepared.axes.elements[index]).points = sample_path(path, map, tolerance);
+    });
+  }
   const bool log_x = prepared.axes.x.scale == Scale::Log, log_y = prepared.axes.y.scale == Scale::Log;
   if (!log_x && !log_y) return;
   for (const auto& [index, where] : prepared.generated)

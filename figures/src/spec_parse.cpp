@@ -261,6 +261,8 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   spec.caption = r.string("caption", "");
   spec.show_title = r.boolean("show_title", true);
   spec.title_size = r.positive("title_size", spec.title_size);
+  if (spec.title_size > kMaxFontSize) r.fail("title_size", "font size over the limit of 4096 px");
+  spec.title_origin = r.origin(r.has("title_size") ? "title_size" : "title");
   r.number("order", 0);  // gallery order (catalog.cpp reads it)
   if (auto t = r.tables("canvas"); !t.empty()) {
     if (t.size() > 1) r.fail("canvas", "only one [canvas] table");
@@ -294,6 +296,9 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
 FigureSpec load_spec(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SpecFileError(path + ": cannot read the spec file");
+  std::error_code ec;
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxSpecBytes)
+    throw SpecFileError(path + ": the spec file has " + std::to_string(bytes) + " bytes (limit 64 MiB)");
   std::ostringstream ss;
   ss << in.rdbuf();
   std::string dir = std::filesystem::path(path).parent_path().string();

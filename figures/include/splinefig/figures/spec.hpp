@@ -11,6 +11,7 @@
 #include <splinefig/spline/curve.hpp>
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,10 @@ struct SpecFileError : std::runtime_error {
 // Largest canvas: 32768 px a side and 2^28 pixels in all (after --scale).
 inline constexpr int kMaxCanvasSide = 32768;
 inline constexpr long long kMaxCanvasPixels = 1LL << 28;
+// Further limits checked where specs are validated, before any work (docs/limits.md).
+inline constexpr std::size_t kMaxSpecBytes = std::size_t(1) << 26;  // a spec file: 64 MiB
+inline constexpr std::size_t kMaxMarks = 100000;                    // x_marks, y_marks, curve marks
+inline constexpr double kMaxFontSize = 4096;                         // text sizes, px (also after --scale)
 
 struct Canvas {
   int width = 800, height = 500;
@@ -376,6 +381,7 @@ struct FigureSpec {
   std::string caption;  // gallery and index only
   bool show_title = true;
   double title_size = 18;
+  std::string title_origin;  // "FILE:LINE: title_size" (or title), for messages
   Canvas canvas;
   Layout layout;
   std::vector<Item> items;  // in document order
