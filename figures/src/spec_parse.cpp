@@ -2,6 +2,8 @@
 // Items keep the document order (by source line), so later items draw over earlier ones.
 #include "spec_parse.hpp"
 
+#include <splinefig/image/io.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -37,6 +39,11 @@ Raster parse_raster(TableReader& r, const ParseContext& ctx) {
     std::filesystem::path p(*file);
     if (p.is_relative()) p = std::filesystem::path(ctx.base_dir) / p;
     if (!std::filesystem::exists(p)) r.fail("file", "no such image file \"" + p.string() + "\"");
+    try {
+      check_image_header(p.string());  // its size against the limits, before anything is decoded
+    } catch (const UnreadableImage& e) {
+      r.fail("file", e.what());
+    }
     raster.file = p.string();
   } else {
     if (data.empty() || data[0].empty()) r.fail("data", "an image needs `file` or non-empty `data` (rows of grey values)");

@@ -34,8 +34,8 @@ for h in "${harnesses[@]}"; do
   if ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       "$build/tests/fuzz/fuzz_$h" "${args[@]}" "$work" >"$log" 2>&1 &&
       ! compgen -G "$build/$h-*-*" >/dev/null; then
-    grep -E "cov:" "$log" | tail -1
-    grep -E "stat::number_of_executed_units" "$log" | tail -1
+    grep -E "cov:" "$log" | tail -1 || true
+    grep -E "stat::number_of_executed_units" "$log" | tail -1 || true
   else
     echo "fuzz_$h: FAILED (see $log)"; grep -E "ERROR|SUMMARY|runtime error|fuzz_$h:" "$log" | sort | uniq -c | head -10
     ls "$build/$h-"*-* 2>/dev/null | head

@@ -58,7 +58,9 @@ struct ResampleOptions {
 void resample_into(const Image& src, Image& dst, const Kernel& k, const ResampleOptions& opt = {});
 Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt = {});
 
-// The worker count `threads` (0: hardware) resolves to.
+// The worker count `threads` (0: hardware) resolves to, at most kMaxResampleThreads (as the
+// command line's --threads): a huge count never reaches thread or chunk arithmetic.
+inline constexpr int kMaxResampleThreads = 256;
 int resolve_threads(int threads);
 
 }  // namespace splinefig
