@@ -50,3 +50,19 @@ TEST_CASE("data mapping beyond the pixel range are errors naming the element") {
   check_refused("far_point", kBox + "[[axes.series]]\npoints = [[0, 0], [1e308, 5]]\n",
                 "far_point.toml:4: axes.series[0]: ");
 }
+
+TEST_CASE("arc-length marks on a curve spanning 1e155 end in bounded time with an error naming the curve") {
+  check_refused("arc", kBox + "[[axes.curve]]\nknots = [[0, 0], [1e155, 1], [0, 0], [0, 0]]\nmarks = 10\n"
+                              "mark_spacing = \"arclength\"\n",
+                "arc.toml:4: axes.curve[0]: arc length: the curve's length is beyond the range of a double");
+  const fs::path dir = scratch();
+  write_file(dir / "knots.csv", "0\n1e155\n0\n0\n");
+  const Outcome o = run_in(dir, {"eval", "--basis", "catmull-rom", "--spacing", "arclength", "--count", "5"}, kTimeLimit,
+                           (dir / "knots.csv").string());
+  INFO(o.err);
+  CHECK_FALSE(o.killed);
+  CHECK(o.code == 2);
+  CHECK(o.out.empty());
+  CHECK_THAT(o.err, Catch::Contains("overflows the range of a double"));
+  fs::remove_all(dir);
+}
