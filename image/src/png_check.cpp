@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -114,7 +115,18 @@ void check_png_structure(const std::string& path) {
     if (data.size() - pos < 12) bad(path, "truncated PNG (incomplete chunk header at byte " + std::to_string(pos) + ")");
     const std::uint32_t length = be32(&data[pos]);
     const unsigned char* type = &data[pos + 4];
-    const std::string tname(reinterpret_cast<const char*>(type), 4);
+    // The chunk type as printable text: a corrupt file's type bytes may be anything.
+    std::string tname;
+    for (int i = 0; i < 4; ++i) {
+      const unsigned char c = type[i];
+      if (c >= 0x21 && c < 0x7f) {
+        tname.push_back(char(c));
+      } else {
+        char hex[5];
+        std::snprintf(hex, sizeof hex, "\\x%02x", c);
+        tname += hex;
+      }
+    }
     if (length > 0x7fffffffu) bad(path, "corrupt PNG (chunk length out of range at byte " + std::to_string(pos) + ")");
     if (data.size() - pos - 12 < length)
       bad(path, "truncated PNG (chunk " + tname + " at byte " + std::to_string(pos) + " ends past the end of the file)");

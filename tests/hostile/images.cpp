@@ -5,6 +5,8 @@
 // output.
 #include "hostile.hpp"
 
+#include <splinefig/image/io.hpp>
+
 #include <zlib.h>
 
 #include <cstdint>
@@ -86,4 +88,17 @@ TEST_CASE("a decompression bomb (20000 x 20000 zeros) is refused from its header
   check_unreadable({"render", "bomb_axes.toml", "-o", "out.png"}, dir, 2,
                    "bomb_axes.toml:3: axes.image[0].file: ./bomb.png: image too large");
   fs::remove_all(dir);
+}
+
+// Found by fuzz_resample: a PNG whose chunk type bytes hold a newline gave a two-line message.
+TEST_CASE("an unreadable PNG's message is one line whatever bytes its chunk types hold") {
+  const std::string path = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/hostile/data/png_chunk_type_newline.png";
+  try {
+    (void)splinefig::read_image(path);
+    FAIL("the corrupt PNG was read");
+  } catch (const splinefig::UnreadableImage& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find('\n') == std::string::npos);
+    CHECK_THAT(e.what(), Catch::Contains("corrupt PNG"));
+  }
 }
