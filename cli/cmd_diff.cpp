@@ -81,6 +81,15 @@ int run(const DiffArgs& args) {
       (args.diff_image == args.triptych || same_file(args.diff_image, args.triptych)))
     throw cli::Failure("--diff-image and --triptych name the same file " + args.diff_image);
 
+  // Every input's header against the image limits before any is decoded.
+  for (const std::string* in : {&args.a, &args.b, &args.mask}) {
+    if (in->empty()) continue;
+    try {
+      check_image_header(*in);
+    } catch (const UnreadableImage& e) {
+      throw cli::Failure(std::string("cannot read ") + e.what(), 4);
+    }
+  }
   const Image a = load(args.a, o.linear);
   const Image b = load(args.b, o.linear);
   std::unique_ptr<Image> mask;

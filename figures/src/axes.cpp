@@ -4,12 +4,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace splinefig::figures {
 
 double AxisMap::transfer(double v) const {
   switch (scale) {
-    case Scale::Log: return std::log10(v);
+    case Scale::Log:
+      if (!(v > 0)) {
+        if (name) throw std::domain_error(std::string("a log ") + name + " axis needs positive " + name + " data");
+        throw std::domain_error("a log axis needs positive data");
+      }
+      return std::log10(v);
     case Scale::Decibel: return 20.0 * std::log10(std::max(std::abs(v), 1e-300));
     case Scale::Linear: break;
   }
@@ -47,6 +53,21 @@ std::string tick_number(double v, int decimals) {
   return s;
 }
 
+std::string range_problem(double lo, double hi) {
+  char buf[160];
+  const double span = std::abs(hi - lo), size = std::max(std::abs(lo), std::abs(hi));
+  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+    std::snprintf(buf, sizeof buf, "the range [%g, %g] is not finite", lo, hi);
+  } else if (!std::isfinite(span)) {
+    std::snprintf(buf, sizeof buf, "the range [%g, %g] is wider than the largest number", lo, hi);
+  } else if (span < kMinAxisSpan || span < kMinRelativeAxisSpan * size) {
+    std::snprintf(buf, sizeof buf, "the range [%.17g, %.17g] is too narrow (the span must be at least 1e-100 and 1e-12 of its ends)", lo, hi);
+  } else {
+    return {};
+  }
+  return buf;
+}
+
 double nice_step(double lo, double hi, double target) {
   double span = std::abs(hi - lo);
   target = std::max(target, 1.0);
@@ -65,14 +86,21 @@ double nice_step(double lo, double hi, double target) {
 std::vector<Tick> nice_ticks(double lo, double hi, double target, double step) {
   if (lo > hi) std::swap(lo, hi);
   if (!(step > 0)) step = nice_step(lo, hi, target);
+  if (!(step > 0 && std::isfinite(step) && std::isfinite(lo) && std::isfinite(hi))) return {};
+  // Counted in double before anything becomes an integer.
+  const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
+  if (!(last - first < kMaxTicks) || !(std::abs(first) < 0x1p53 && std::abs(last) < 0x1p53)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "a tick step of %g gives more than %d ticks over [%g, %g]", step, kMaxTicks, lo, hi);
+    throw std::invalid_argument(buf);
+  }
   int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
   // 2.5-type steps never arise (1-2-5 only), but forced steps may need one more digit.
   double scaled = step * std::pow(10.0, decimals);
   if (std::abs(scaled - std::round(scaled)) > 1e-6) ++decimals;
   std::vector<Tick> ticks;
-  long long k0 = static_cast<long long>(std::ceil(lo / step - 1e-9));
-  long long k1 = static_cast<long long>(std::floor(hi / step + 1e-9));
-  for (long long k = k0; k <= k1 && ticks.size() < 1000; ++k) {
+  const long long k0 = static_cast<long long>(first), k1 = static_cast<long long>(last);
+  for (long long k = k0; k <= k1; ++k) {
     double v = k * step;
     if (std::abs(v) < step * 1e-9) v = 0;
     ticks.push_back({v, tick_number(v, decimals)});
@@ -82,6 +110,7 @@ std::vector<Tick> nice_ticks(double lo, double hi, double target, double step) {
 
 std::vector<Tick> log_ticks(double lo, double hi) {
   if (lo > hi) std::swap(lo, hi);
+  if (!(lo > 0 && hi < HUGE_VAL)) throw std::invalid_argument("log ticks need a positive, finite range");
   int k0 = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));
   int k1 = static_cast<int>(std::floor(std::log10(hi) + 1e-9));
   if (k1 - k0 < 1) return nice_ticks(lo, hi, 5);

@@ -101,6 +101,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
     Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true};
+    p.set_origin(spec.title_origin.empty() ? spec.path + ": title" : spec.title_origin);
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;
   }
@@ -113,15 +114,19 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
                        W,
                        H};
   Occupancy occ(spec.canvas.width, spec.canvas.height);
-  for (const Item& item : spec.items) {
-    std::visit(
-        [&](const auto& it) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(it)>, AxesSpec>)
-            info.axes.push_back(draw_axes(it, grid.cell(it), scale, p, occ, g));
-          else
-            draw_item(it, p);
-        },
-        item);
+  for (std::size_t i = 0; i < spec.items.size(); ++i) {
+    const std::string& origin = i < spec.item_origins.size() ? spec.item_origins[i] : spec.path;
+    p.set_origin(origin);
+    naming_origin(origin, [&] {
+      std::visit(
+          [&](const auto& it) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(it)>, AxesSpec>)
+              info.axes.push_back(draw_axes(it, grid.cell(it), scale, p, occ, g));
+            else
+              draw_item(it, p);
+          },
+          spec.items[i]);
+    });
   }
   return info;
 }

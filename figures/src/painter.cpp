@@ -16,23 +16,32 @@
 
 namespace splinefig::figures::detail {
 
+void Painter::set_origin(const std::string& origin) {
+  if (origins_.back() != origin) origins_.push_back(origin);
+}
+const std::string& Painter::origin_of(std::size_t op) const { return origins_[op_origin_[op]]; }
+void Painter::add(Op op) {
+  ops_.push_back(std::move(op));
+  op_origin_.push_back(static_cast<std::uint32_t>(origins_.size() - 1));
+}
+
 void Painter::stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c) {
   if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
-  ops_.push_back(StrokeOp{std::move(pts), closed, s, c});
+  add(StrokeOp{std::move(pts), closed, s, c});
 }
 void Painter::stroke(render::Path path, const render::StrokeStyle& s, Color c) {
   if (path.empty() || !(s.width > 0) || c.a <= 0) return;
-  ops_.push_back(PathStrokeOp{std::move(path), s, c});
+  add(PathStrokeOp{std::move(path), s, c});
 }
 void Painter::fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c) {
   if (c.a <= 0) return;
-  ops_.push_back(FillOp{std::move(contours), rule, c});
+  add(FillOp{std::move(contours), rule, c});
 }
 void Painter::circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke) {
-  ops_.push_back(CircleOp{centre, r, fill, stroke});
+  add(CircleOp{centre, r, fill, stroke});
 }
 void Painter::marker(render::Marker shape, Vec2 centre, double size, Color c) {
-  ops_.push_back(MarkerOp{shape, centre, size, c});
+  add(MarkerOp{shape, centre, size, c});
 }
 Font Painter::resolved(const Font& f) const {
   Font r = f;
@@ -41,10 +50,10 @@ Font Painter::resolved(const Font& f) const {
 }
 void Painter::text(std::string s, Vec2 at, const Font& f, TextAnchor a, double angle) {
   if (s.empty()) return;
-  ops_.push_back(TextOp{std::move(s), at, resolved(f), a, angle});
+  add(TextOp{std::move(s), at, resolved(f), a, angle});
 }
 void Painter::image(Raster r, double x0, double y0, double x1, double y1) {
-  ops_.push_back(ImageOp{std::move(r), x0, y0, x1, y1});
+  add(ImageOp{std::move(r), x0, y0, x1, y1});
 }
 
 namespace {
@@ -170,8 +179,9 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
 render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter) {
   const double s = p.scale();
   render::Scene scene(width, height, background, filter);
-  for (const Op& op : p.ops()) {
-    std::visit(
+  for (std::size_t i = 0; i < p.ops().size(); ++i) {
+    const Op& op = p.ops()[i];
+    naming_origin(p.origin_of(i), [&] { std::visit(
         [&](const auto& o) {
           using T = std::decay_t<decltype(o)>;
           if constexpr (std::is_same_v<T, StrokeOp>) {
@@ -196,7 +206,7 @@ render::Scene scene_of(const Painter& p, int width, int height, Color background
                         o.raster.nearest ? render::Scene::Sampling::Nearest : render::Scene::Sampling::Bilinear);
           }
         },
-        op);
+        op); });
   }
   return scene;
 }

@@ -4,7 +4,10 @@
 #include <splinefig/figures/spec.hpp>
 #include <splinefig/renderer/path.hpp>
 
+#include <cstdint>
 #include <map>
+#include <new>
+#include <string>
 #include <tuple>
 #include <variant>
 #include <vector>
@@ -73,14 +76,37 @@ class Painter {
 
   const std::vector<Op>& ops() const { return ops_; }
 
+  // "FILE:LINE: KEY" of the spec table whose drawing follows; every op records it, so that an
+  // error found when the op is painted names that table.
+  void set_origin(const std::string& origin);
+  const std::string& origin_of(std::size_t op) const;
+
  private:
   Font resolved(const Font& f) const;
+  void add(Op op);
 
   double scale_;
   render::FontFamily family_;
   std::vector<Op> ops_;
+  std::vector<std::string> origins_{std::string()};
+  std::vector<std::uint32_t> op_origin_;  // index into origins_, per op
   mutable std::map<std::tuple<std::string, double, bool, int>, render::TextExtent> cache_;
 };
+
+// Runs f(); an error it throws other than SpecFileError becomes a SpecFileError
+// "ORIGIN: what" (one line), `origin` being "FILE:LINE: KEY" of the spec table being drawn.
+template <class F>
+void naming_origin(const std::string& origin, F&& f) {
+  try {
+    f();
+  } catch (const SpecFileError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw SpecFileError(origin + ": out of memory");
+  } catch (const std::exception& e) {
+    throw SpecFileError(origin.empty() ? std::string(e.what()) : origin + ": " + e.what());
+  }
+}
 
 // Width and height of a raster in its own pixels (reads the file header if needed).
 Vec2 raster_size(const Raster& r);

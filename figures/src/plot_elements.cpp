@@ -351,7 +351,9 @@ void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p,
   const AxesSpec& ax = prepared.axes;
   ElementPainter d(ax, panel, p, occ, series, legend);
   for (size_t i = 0; i < ax.elements.size(); ++i) {
-    std::visit(
+    const std::string& origin = i < ax.element_origins.size() ? ax.element_origins[i] : ax.where + ": axes";
+    p.set_origin(origin);
+    naming_origin(origin, [&] { std::visit(
         [&](const auto& e) {
           using T = std::decay_t<decltype(e)>;
           if constexpr (std::is_same_v<T, CurveElement>) draw_curve(e, prepared.curves.at(i), d);
@@ -364,8 +366,9 @@ void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p,
           else if constexpr (std::is_same_v<T, ImageElement>) draw_image_element(e, d);
           // Generated elements were replaced by what they generate (PreparedAxes).
         },
-        ax.elements[i]);
+        ax.elements[i]); });
   }
+  p.set_origin(ax.where + ": axes");
   d.place_inline_labels();
 }
 

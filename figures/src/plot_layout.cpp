@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace splinefig::figures::detail {
 namespace {
@@ -68,7 +70,8 @@ std::array<double, 2> auto_range(const AxisSpec& axis, std::array<double, 2> b, 
   return {b[0] - 0.05 * span, b[1] + 0.05 * span};
 }
 
-std::vector<Tick> make_ticks(const AxisSpec& axis, const std::array<double, 2>& range, double pixels, double spacing) {
+std::vector<Tick> make_ticks(const AxisSpec& axis, char name, const std::array<double, 2>& range, double pixels,
+                             double spacing) {
   if (axis.ticks) {
     std::vector<Tick> t;
     for (size_t i = 0; i < axis.ticks->size(); ++i) {
@@ -90,7 +93,12 @@ std::vector<Tick> make_ticks(const AxisSpec& axis, const std::array<double, 2>& 
   }
   if (axis.scale == Scale::Log) return log_ticks(range[0], range[1]);
   double target = std::clamp(std::abs(pixels) / spacing, 2.0, 12.0);
-  auto ticks = nice_ticks(range[0], range[1], target, axis.tick_step.value_or(0));
+  std::vector<Tick> ticks;
+  try {
+    ticks = nice_ticks(range[0], range[1], target, axis.tick_step.value_or(0));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string(1, name) + (axis.tick_step ? "_tick_step: " : "_range: ") + e.what());
+  }
   if (axis.scale == Scale::Decibel)
     for (auto& t : ticks) t.label += " dB";
   return ticks;
@@ -137,11 +145,19 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
     box = {(*ax.box)[0], (*ax.box)[1], (*ax.box)[2], (*ax.box)[3]};
   }
   std::array<double, 2> xr = xr0, yr = yr0;
+  // A range from the data (or widened for equal aspect) is checked as a given one is.
+  auto check_range = [](const AxisSpec& axis, char name, const std::array<double, 2>& r) {
+    const std::string why = range_problem(r[0], r[1]);
+    if (!why.empty())
+      throw std::invalid_argument(std::string(1, name) + "_range: " + why + (axis.range ? "" : " (from the data)"));
+  };
   for (int pass = 0; pass < 3; ++pass) {
     xr = xr0, yr = yr0;
     if (ax.equal_aspect) equalize(xr, yr, box.width(), box.height());
-    panel.x_ticks = make_ticks(ax.x, xr, box.width(), 90);
-    panel.y_ticks = make_ticks(ax.y, yr, box.height(), 55);
+    check_range(ax.x, 'x', xr);
+    check_range(ax.y, 'y', yr);
+    panel.x_ticks = make_ticks(ax.x, 'x', xr, box.width(), 90);
+    panel.y_ticks = make_ticks(ax.y, 'y', yr, box.height(), 55);
     if (ax.box) break;
     double ylabel_w = 0, xlabel_last = 0;
     if (guides) {
@@ -160,8 +176,8 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
   panel.box = box;
   panel.x_range = xr;
   panel.y_range = yr;
-  panel.map.x = {ax.x.scale, xr[0], xr[1], box.left, box.right};
-  panel.map.y = {ax.y.scale, yr[0], yr[1], box.bottom, box.top};
+  panel.map.x = {ax.x.scale, xr[0], xr[1], box.left, box.right, 'x'};
+  panel.map.y = {ax.y.scale, yr[0], yr[1], box.bottom, box.top, 'y'};
   // Ticks outside the (possibly widened) range are dropped.
   auto inside = [](const AxisMap& m, const Tick& t, double a, double b) {
     double v = tick_pixel(m, t.value);

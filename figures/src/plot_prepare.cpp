@@ -8,41 +8,46 @@ PreparedAxes prepare_axes(const AxesSpec& ax) {
   out.axes = ax;
   out.axes.elements.clear();
   auto& elements = out.axes.elements;
-  for (const PlotElement& e : ax.elements) {
-    if (const auto* c = std::get_if<CurveElement>(&e)) {
-      Points knots(2);
-      for (Vec2 k : c->knots) knots.push_back(std::array<double, 2>{k.x, k.y});
-      out.curves.emplace(elements.size(), make_curve(c->basis, knots, c->ends));
-    }
-    if (!is_generated(e)) {
-      elements.push_back(e);
-      continue;
-    }
-    const std::string where = std::visit(
-        [](const auto& x) -> std::string {
-          if constexpr (requires { x.where; }) return x.where;
-          else return {};
-        },
-        e);
-    for (GeneratedPart& part : generate(e)) {
-      if (auto* g = std::get_if<GeneratedSeries>(&part)) {
-        out.generated.emplace_back(elements.size(), where);
-        if (g->path) {
-          g->series.points = rough_points(*g->path);
-          out.paths.emplace_back(elements.size(), std::move(*g->path));
-        }
-        elements.push_back(std::move(g->series));
-      } else {
-        elements.push_back(std::move(std::get<ImageElement>(part)));
+  auto& origins = out.axes.element_origins;
+  origins.clear();
+  for (std::size_t i = 0; i < ax.elements.size(); ++i) {
+    const PlotElement& e = ax.elements[i];
+    const std::string origin = i < ax.element_origins.size() ? ax.element_origins[i] : ax.where + ": axes";
+    naming_origin(origin, [&] {
+      if (const auto* c = std::get_if<CurveElement>(&e)) {
+        Points knots(2);
+        for (Vec2 k : c->knots) knots.push_back(std::array<double, 2>{k.x, k.y});
+        out.curves.emplace(elements.size(), make_curve(c->basis, knots, c->ends));
       }
-    }
+      if (!is_generated(e)) {
+        elements.push_back(e);
+        return;
+      }
+      for (GeneratedPart& part : generate(e)) {
+        if (auto* g = std::get_if<GeneratedSeries>(&part)) {
+          out.generated.emplace_back(elements.size(), origin);
+          if (g->path) {
+            g->series.points = rough_points(*g->path);
+            out.paths.emplace_back(elements.size(), std::move(*g->path));
+          }
+          elements.push_back(std::move(g->series));
+        } else {
+          elements.push_back(std::move(std::get<ImageElement>(part)));
+        }
+      }
+    });
+    origins.resize(elements.size(), origin);
   }
   return out;
 }
 
 void sample_paths(PreparedAxes& prepared, const PixelMap& map, double tolerance) {
-  for (const auto& [index, path] : prepared.paths)
-    std::get<SeriesElement>(prepared.axes.elements[index]).points = sample_path(path, map, tolerance);
+  for (const auto& [index, path] : prepared.paths) {
+    const auto& origins = prepared.axes.element_origins;
+    naming_origin(index < origins.size() ? origins[index] : prepared.axes.where, [&] {
+      std::get<SeriesElement>(prepared.axes.elements[index]).points = sample_path(path, map, tolerance);
+    });
+  }
   const bool log_x = prepared.axes.x.scale == Scale::Log, log_y = prepared.axes.y.scale == Scale::Log;
   if (!log_x && !log_y) return;
   for (const auto& [index, where] : prepared.generated)

@@ -2,6 +2,8 @@
 // Items keep the document order (by source line), so later items draw over earlier ones.
 #include "spec_parse.hpp"
 
+#include <splinefig/image/io.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -37,6 +39,11 @@ Raster parse_raster(TableReader& r, const ParseContext& ctx) {
     std::filesystem::path p(*file);
     if (p.is_relative()) p = std::filesystem::path(ctx.base_dir) / p;
     if (!std::filesystem::exists(p)) r.fail("file", "no such image file \"" + p.string() + "\"");
+    try {
+      check_image_header(p.string());  // its size against the limits, before anything is decoded
+    } catch (const UnreadableImage& e) {
+      r.fail("file", e.what());
+    }
     raster.file = p.string();
   } else {
     if (data.empty() || data[0].empty()) r.fail("data", "an image needs `file` or non-empty `data` (rows of grey values)");
@@ -193,10 +200,19 @@ ImageItem parse_image(TableReader& r, const ParseContext& ctx) {
 
 }  // namespace
 
-// Reads every [key] / [[key]] table as an item, with its source line (for document order).
+// An item with its source line (for document order) and its "FILE:LINE: KEY" (for messages).
+struct Placed {
+  size_t line;
+  Item item;
+  std::string origin;
+};
+
+// Reads every [key] / [[key]] table as an item.
 template <class F>
-static void collect(TableReader& r, std::string_view key, std::vector<std::pair<size_t, Item>>& out, F&& read) {
-  r.each_table(key, [&](TableReader& sub, const toml::table& t) { out.emplace_back(t.source().begin.line, read(sub, t)); });
+static void collect(TableReader& r, std::string_view key, std::vector<Placed>& out, F&& read) {
+  r.each_table(key, [&](TableReader& sub, const toml::table& t) {
+    out.push_back({t.source().begin.line, read(sub, t), sub.origin("")});
+  });
 }
 
 }  // namespace detail
@@ -254,6 +270,8 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   spec.show_title = r.boolean("show_title", true);
   spec.title_size = r.positive("title_size", spec.title_size);
   spec.font_family = r.font_family("font_family", spec.font_family);
+  if (spec.title_size > kMaxFontSize) r.fail("title_size", "font size over the limit of 4096 px");
+  spec.title_origin = r.origin(r.has("title_size") ? "title_size" : "title");
   r.number("order", 0);  // gallery order (catalog.cpp reads it)
   if (auto t = r.tables("canvas"); !t.empty()) {
     if (t.size() > 1) r.fail("canvas", "only one [canvas] table");
@@ -265,7 +283,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
     TableReader l(*t[0], name, "layout");
     spec.layout = parse_layout(l);
   }
-  std::vector<std::pair<size_t, Item>> items;
+  std::vector<Placed> items;
   collect(r, "polyline", items, [](TableReader& s, const toml::table&) { return Item{parse_polyline(s)}; });
   collect(r, "polygon", items, [](TableReader& s, const toml::table&) { return Item{parse_polygon(s)}; });
   collect(r, "circle", items, [](TableReader& s, const toml::table&) { return Item{parse_circle(s)}; });
@@ -274,8 +292,11 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   collect(r, "image", items, [&](TableReader& s, const toml::table&) { return Item{parse_image(s, ctx)}; });
   collect(r, "axes", items, [&](TableReader& s, const toml::table&) { return Item{parse_axes(s, ctx)}; });
   r.finish();
-  std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [line, item] : items) spec.items.push_back(std::move(item));
+  std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
+  for (auto& placed : items) {
+    spec.items.push_back(std::move(placed.item));
+    spec.item_origins.push_back(std::move(placed.origin));
+  }
 
   place_panels(spec);
   return spec;
@@ -284,6 +305,9 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
 FigureSpec load_spec(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SpecFileError(path + ": cannot read the spec file");
+  std::error_code ec;
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxSpecBytes)
+    throw SpecFileError(path + ": the spec file has " + std::to_string(bytes) + " bytes (limit 64 MiB)");
   std::ostringstream ss;
   ss << in.rdbuf();
   std::string dir = std::filesystem::path(path).parent_path().string();

@@ -1,9 +1,12 @@
 // The figure spec loader, part 2: [axes] panels and their plot elements (docs/spec.md).
 #include "spec_parse.hpp"
 
+#include <splinefig/figures/axes.hpp>
 #include <splinefig/figures/palette.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 
 namespace splinefig::figures::detail {
 namespace {
@@ -24,6 +27,7 @@ void parse_axis(TableReader& r, char name, AxisSpec& axis) {
     auto v = r.numbers(p + "_range");
     if (v.size() != 2) r.fail(p + "_range", "expected [" + p + "0, " + p + "1]");
     if (v[0] == v[1]) r.fail(p + "_range", p + "0 = " + p + "1 (the axis would have no extent)");
+    if (const std::string why = range_problem(v[0], v[1]); !why.empty()) r.fail(p + "_range", why);
     axis.range = std::array<double, 2>{v[0], v[1]};
   }
   axis.scale = static_cast<Scale>(r.choice(p + "_scale", {"linear", "log", "db"}, 0));
@@ -37,6 +41,8 @@ void parse_axis(TableReader& r, char name, AxisSpec& axis) {
       if (!b->get()) axis.ticks = std::vector<double>{};
     } else {
       axis.ticks = r.numbers(p + "_ticks");
+      if (axis.ticks->size() > static_cast<std::size_t>(kMaxTicks))
+        r.fail(p + "_ticks", std::to_string(axis.ticks->size()) + " ticks (limit " + std::to_string(kMaxTicks) + ")");
     }
   }
   axis.tick_labels = r.labels(p + "_tick_labels");
@@ -44,9 +50,13 @@ void parse_axis(TableReader& r, char name, AxisSpec& axis) {
     r.fail(p + "_tick_labels", "needs explicit " + p + "_ticks of the same length");
   if (auto s = r.opt_number(p + "_tick_step")) {
     if (!(*s > 0)) r.fail(p + "_tick_step", "must be positive");
+    if (axis.range && axis.scale != Scale::Log && !(std::abs((*axis.range)[1] - (*axis.range)[0]) / *s < kMaxTicks))
+      r.fail(p + "_tick_step", "gives more than " + std::to_string(kMaxTicks) + " ticks over the " + p + "_range");
     axis.tick_step = *s;
   }
   axis.marks = r.numbers(p + "_marks");
+  if (axis.marks.size() > kMaxMarks)
+    r.fail(p + "_marks", std::to_string(axis.marks.size()) + " marks (limit " + std::to_string(kMaxMarks) + ")");
 }
 
 std::vector<Vec2> xy_data(TableReader& r, bool required, const char* what) {
@@ -78,7 +88,7 @@ CurveElement parse_curve(TableReader& r) {
   if (c.knots.size() < need)
     r.fail("knots", std::to_string(c.knots.size()) + " knots are too few for one piece of this curve with " +
                         to_string(c.ends) + " ends (need " + std::to_string(need) + ")");
-  c.marks = r.integer("marks", 0, 0, 100000);
+  c.marks = r.integer("marks", 0, 0, static_cast<int>(kMaxMarks));
   c.marks_by_arclength = r.choice("mark_spacing", {"parameter", "arclength"}, 0) == 1;
   c.mark_size = r.positive("mark_size", c.mark_size);
   c.mark_color = r.opt_color("mark_color");
@@ -255,9 +265,11 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   }
 
   std::vector<std::pair<size_t, PlotElement>> elements;
+  std::map<size_t, std::string> origins;  // by source line; generated elements carry `where`
   auto each = [&](std::string_view key, auto&& read) {
     r.each_table(key, [&](TableReader& sub, const toml::table& t) {
       elements.emplace_back(t.source().begin.line, PlotElement{read(sub)});
+      origins[t.source().begin.line] = sub.origin("");
     });
   };
   each("curve", parse_curve);
@@ -274,7 +286,17 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   parse_generated_elements(r, elements);  // docs/companion.md, docs/resample.md
   r.finish();
   std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [line, e] : elements) ax.elements.push_back(std::move(e));
+  for (auto& [line, e] : elements) {
+    std::string origin = std::visit(
+        [](const auto& x) -> std::string {
+          if constexpr (requires { x.where; }) return x.where;
+          else return {};
+        },
+        e);
+    if (auto it = origins.find(line); origin.empty() && it != origins.end()) origin = it->second;
+    ax.elements.push_back(std::move(e));
+    ax.element_origins.push_back(origin.empty() ? ax.where + ": " + r.path() : origin);
+  }
 
   if (ax.y.scale == Scale::Log) {
     for (const auto& e : ax.elements)

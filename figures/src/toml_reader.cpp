@@ -399,6 +399,7 @@ render::StrokeStyle TableReader::stroke(render::StrokeStyle s) {
 
 Font TableReader::font(Font f, std::string_view size_key, std::string_view color_key) {
   f.size = positive(size_key, f.size);
+  if (f.size > kMaxFontSize) fail(size_key, "font size " + shortest(f.size) + " is over the limit of 4096 px");
   f.color = color(color_key, f.color);
   f.bold = boolean("bold", f.bold);
   if (node("font_family")) f.family = font_family("font_family", render::FontFamily::Sans);

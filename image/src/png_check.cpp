@@ -3,12 +3,15 @@
 // exact filtered-scanline size that IHDR implies (section 7.2 for the row layout, 8.2 for the
 // Adam7 passes). libpng treats "not enough image data" as a benign error, so a PNG cut inside
 // its pixel data can decode to garbage rows without failing: this check is what catches it.
+#include "png_check.hpp"
+
 #include <splinefig/image/io.hpp>
 
 #include <zlib.h>
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -64,7 +67,29 @@ std::uint64_t expected_image_bytes(std::uint32_t width, std::uint32_t height, in
   throw UnreadableImage(path + ": " + why);
 }
 
+// The declared size against the limits (io.hpp), before any pixel data is inflated.
+void check_png_size(const std::string& path, std::uint64_t width, std::uint64_t height, int colour_type) {
+  // An indexed image is read as RGB or RGBA.
+  const int channels = colour_type == 3 ? 4 : png_channels(colour_type);
+  const std::uint64_t pixels = width * height, values = pixels * std::uint64_t(channels);
+  if (pixels > max_image_pixels || values > max_image_values)
+    bad(path, "image too large (" + std::to_string(width) + " x " + std::to_string(height) +
+                  " pixels declared in the header, limit 2^28 pixels)");
+}
+
 }  // namespace
+
+void check_png_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char head[29] = {};
+  in.read(reinterpret_cast<char*>(head), sizeof head);
+  static constexpr unsigned char signature[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+  if (in.gcount() != sizeof head || std::memcmp(head, signature, 8) != 0 || std::memcmp(head + 12, "IHDR", 4) != 0)
+    bad(path, "not a PNG file (bad signature or no IHDR chunk)");
+  const std::uint32_t w = be32(head + 16), h = be32(head + 20);
+  if (w == 0 || h == 0) bad(path, "corrupt PNG (image size " + std::to_string(w) + " x " + std::to_string(h) + ")");
+  check_png_size(path, w, h, head[25]);
+}
 
 void check_png_structure(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -90,7 +115,18 @@ void check_png_structure(const std::string& path) {
     if (data.size() - pos < 12) bad(path, "truncated PNG (incomplete chunk header at byte " + std::to_string(pos) + ")");
     const std::uint32_t length = be32(&data[pos]);
     const unsigned char* type = &data[pos + 4];
-    const std::string tname(reinterpret_cast<const char*>(type), 4);
+    // The chunk type as printable text: a corrupt file's type bytes may be anything.
+    std::string tname;
+    for (int i = 0; i < 4; ++i) {
+      const unsigned char c = type[i];
+      if (c >= 0x21 && c < 0x7f) {
+        tname.push_back(char(c));
+      } else {
+        char hex[5];
+        std::snprintf(hex, sizeof hex, "\\x%02x", c);
+        tname += hex;
+      }
+    }
     if (length > 0x7fffffffu) bad(path, "corrupt PNG (chunk length out of range at byte " + std::to_string(pos) + ")");
     if (data.size() - pos - 12 < length)
       bad(path, "truncated PNG (chunk " + tname + " at byte " + std::to_string(pos) + " ends past the end of the file)");
@@ -109,6 +145,7 @@ void check_png_structure(const std::string& path) {
       if (width == 0 || height == 0 || width > 0x7fffffffu || height > 0x7fffffffu)
         bad(path, "corrupt PNG (image size " + std::to_string(width) + " x " + std::to_string(height) + ")");
       if (!valid_depth(colour_type, depth)) bad(path, "corrupt PNG (invalid bit depth or colour type)");
+      check_png_size(path, width, height, colour_type);
       if (body[10] != 0 || body[11] != 0 || body[12] > 1) bad(path, "corrupt PNG (unknown compression, filter or interlace method)");
       bits_per_pixel = png_channels(colour_type) * depth;
       adam7 = body[12] == 1;

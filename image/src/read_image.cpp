@@ -3,6 +3,7 @@
 #include <splinefig/image/srgb.hpp>
 
 #include "one_line.hpp"
+#include "png_check.hpp"
 
 #include "codec.hpp"
 
@@ -65,7 +66,35 @@ const detail::ImageCodec& load_codec(const std::string& path) {
   }
 }
 
+// The header's size against the limits (io.hpp); the number of values.
+std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spec) {
+  const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
+  const std::uint64_t values = pixels * std::uint64_t(spec.channels);
+  if (values > max_image_values || pixels > max_image_pixels)
+    unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
+                         std::to_string(spec.channels) + " values, limit 2^28 pixels and 2^30 values)");
+  return values;
+}
+
 }  // namespace
+
+void check_image_header(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) unreadable(path, "no such file");
+  if (!fs::is_regular_file(st)) unreadable(path, fs::is_directory(st) ? "is a directory" : "not a regular file");
+  if (has_png_signature(path)) {
+    check_png_header(path);
+    return;
+  }
+  const detail::ImageCodec& codec = load_codec(path);
+  detail::CodecHeader spec;
+  std::string error;
+  std::unique_ptr<void, void (*)(void*)> in(codec.open(path.c_str(), false, spec, error), codec.close);
+  if (!in) unreadable(path, one_line(error));
+  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0) unreadable(path, "empty image");
+  check_size(path, spec);
+}
 
 Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
   std::error_code ec;
@@ -77,7 +106,10 @@ Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
     std::ifstream probe(path, std::ios::binary);
     if (!probe) unreadable(path, std::string("cannot open file (") + std::strerror(errno) + ")");
   }
-  if (has_png_signature(path)) check_png_structure(path);
+  if (has_png_signature(path)) {
+    check_png_header(path);  // the declared size first: nothing is inflated for an oversized image
+    check_png_structure(path);
+  }
 
   const detail::ImageCodec& codec = load_codec(path);
   detail::CodecHeader spec;
@@ -91,10 +123,7 @@ Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
     if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0)
       unreadable(path, "empty image (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ", " +
                            std::to_string(spec.channels) + " channels)");
-    const std::uint64_t values = std::uint64_t(spec.width) * std::uint64_t(spec.height) * std::uint64_t(spec.channels);
-    if (values > max_image_values)
-      unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
-                           std::to_string(spec.channels) + " values, limit 2^30)");
+    const std::uint64_t values = check_size(path, spec);
     Image im;
     im.width = spec.width;
     im.height = spec.height;

@@ -1,6 +1,7 @@
 // Scene: validation of every drawing call, then recording it. Bad input is rejected here with
 // std::invalid_argument naming the argument, so rasterization never sees NaN or infinities.
 #include "scene_item.hpp"
+#include "stroke.hpp"
 
 #include "huge_pages.hpp"
 
@@ -100,6 +101,14 @@ void Scene::stroke_polyline(std::span<const Vec2> points, bool closed, const Str
   check_points(points, "stroke_polyline", "polyline");
   check_style(style, "stroke_polyline");
   check_color(color, "stroke_polyline");
+  const double work = detail::visible_dash_work(points, closed, style, {0, 0, double(width_), double(height_)});
+  if (work > detail::kMaxDashWork) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "stroke_polyline: the dash pattern is too fine for its length and width on this canvas "
+                  "(%.3g dashes x overlap^2, limit 2^20)", work);
+    bad(buf);
+  }
   Item it;
   it.kind = Item::Kind::Stroke;
   it.contours.emplace_back(points.begin(), points.end());

@@ -202,6 +202,56 @@ void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& s
   if (closed) o.closed(p); else o.open(p);
 }
 
+namespace {
+
+// Geometry farther than this from the clip box cannot touch it.
+double stroke_reach(const StrokeStyle& style) { return 0.5 * style.width * std::max(style.miter_limit, 1.5) + 2.0; }
+
+Box inflated(Box b, double d) {
+  b.x0 -= d; b.y0 -= d; b.x1 += d; b.y1 += d;
+  return b;
+}
+
+// Liang-Barsky: the part [t0, t1] (in length units along the unit direction d) of the segment
+// from a of length len inside `box`; t0 >= t1 when none is.
+void clip_segment(Vec2 a, Vec2 d, double len, const Box& box, double& t0, double& t1) {
+  t0 = 0;
+  t1 = len;
+  auto clip1 = [&](double pdir, double q) {  // pdir * t <= q
+    if (pdir == 0) { if (q < 0) { t0 = 1; t1 = 0; } return; }
+    double t = q / pdir;
+    if (pdir < 0) t0 = std::max(t0, t); else t1 = std::min(t1, t);
+  };
+  clip1(-d.x, a.x - box.x0); clip1(d.x, box.x1 - a.x);
+  clip1(-d.y, a.y - box.y0); clip1(d.y, box.y1 - a.y);
+}
+
+}  // namespace
+
+double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip) {
+  if (!(style.width > 0) || pts.size() < 2 || style.dashes.empty()) return 0;
+  double period = 0;
+  for (double d : style.dashes) period += d;
+  if (!(period > 0)) return 0;
+  const double per_period = static_cast<double>((style.dashes.size() + 1) / 2);
+  const Box near = inflated(clip, stroke_reach(style));
+  double count = 0;
+  const std::size_t n = pts.size(), segments = closed ? n : n - 1;
+  for (std::size_t i = 0; i < segments; ++i) {
+    const Vec2 a = pts[i], b = pts[(i + 1) % n], e = b - a;
+    const double len = length(e);
+    if (!(len > 0)) continue;
+    double t0, t1;
+    clip_segment(a, (1.0 / len) * e, len, near, t0, t1);
+    if (t0 < t1) count += (t1 - t0) / period * per_period + 1;
+  }
+  // Each dash's outline overlaps those within a stroke width, and the rasterizer pays for the
+  // crossings of overlapping outlines: a pattern finer than its pen costs that much more
+  // (measured: about the square of the overlap).
+  const double overlap = std::min(1 + style.width / period * per_period, count);
+  return count * overlap * overlap;
+}
+
 void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {
   if (!(style.width > 0) || pts.empty()) return;
   std::vector<double> dash = style.dashes;
@@ -218,11 +268,9 @@ void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& styl
   std::vector<Vec2> p(pts.begin(), pts.end());
   if (closed && !p.empty()) p.push_back(p.front());
 
-  // Geometry farther than `reach` from the canvas cannot touch it: dash runs are clipped there.
-  const double h = 0.5 * style.width;
-  const double reach = h * std::max(style.miter_limit, 1.5) + 2.0;
-  Box near = out.clip();
-  near.x0 -= reach; near.y0 -= reach; near.x1 += reach; near.y1 += reach;
+  // Geometry farther than the stroke's reach from the canvas cannot touch it: dash runs are
+  // clipped there.
+  const Box near = inflated(out.clip(), stroke_reach(style));
 
   // Dash state: index into the pattern, distance left in that entry.
   double ph = std::fmod(style.dash_offset, period);
@@ -261,31 +309,29 @@ void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& styl
     double len = length(e);
     if (len == 0) continue;
     Vec2 d = (1.0 / len) * e;
-    // Liang-Barsky: the part [t0, t1] (in length units) of the segment inside `near`.
-    double t0 = 0, t1 = len;
-    auto clip1 = [&](double pdir, double q) {  // pdir * t <= q
-      if (pdir == 0) { if (q < 0) { t0 = 1; t1 = 0; } return; }
-      double t = q / pdir;
-      if (pdir < 0) t0 = std::max(t0, t); else t1 = std::min(t1, t);
-    };
-    clip1(-d.x, a.x - near.x0); clip1(d.x, near.x1 - a.x);
-    clip1(-d.y, a.y - near.y0); clip1(d.y, near.y1 - a.y);
+    double t0, t1;
+    clip_segment(a, d, len, near, t0, t1);
     if (t0 >= t1) {  // the whole segment is far away
       flush();
       advance_far(len);
       continue;
     }
+    if (t0 > 0) { flush(); advance_far(t0); }
+    // The dashes are walked from the visible part's start a0, in its own length units: along a
+    // segment from 1e14 a step of a short dash would not change t near 1e14.
+    const Vec2 a0 = t0 > 0 ? a + t0 * d : a;
+    const bool to_end = t1 >= len;
+    const double span = to_end ? len - t0 : t1 - t0;
     double t = 0;
-    if (t0 > 0) { flush(); advance_far(t0); t = t0; }
     const bool on_at_start = idx % 2 == 0;
-    if (on_at_start && run.empty()) run.push_back(a + t * d);
-    if (on_at_start && !run.empty() && !(run.back() == (a + t * d))) run.push_back(a + t * d);
-    while (t < t1) {
-      double step = std::min(left, t1 - t);
+    if (on_at_start && run.empty()) run.push_back(a0);
+    if (on_at_start && !run.empty() && !(run.back() == a0)) run.push_back(a0);
+    while (t < span) {
+      double step = std::min(left, span - t);
       t += step;
       left -= step;
       if (left <= 0) {
-        Vec2 q = t >= len ? b : a + t * d;
+        Vec2 q = to_end && t >= span ? b : a0 + t * d;
         if (idx % 2 == 0) {  // a dash ends here
           run.push_back(q);
           run_dir = d;
@@ -299,10 +345,10 @@ void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& styl
       }
     }
     if (idx % 2 == 0 && !run.empty()) {
-      run.push_back(t1 >= len ? b : a + t1 * d);
+      run.push_back(to_end ? b : a0 + span * d);
       run_dir = d;
     }
-    if (t1 < len) { flush(); advance_far(len - t1); }
+    if (!to_end) { flush(); advance_far(len - t1); }
   }
   flush();
 }

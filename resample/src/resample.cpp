@@ -452,7 +452,7 @@ void vertical_first(const Plan& p, int threads) {
 }  // namespace
 
 int resolve_threads(int threads) {
-  if (threads > 0) return threads;
+  if (threads > 0) return std::min(threads, kMaxResampleThreads);
   const unsigned hw = std::thread::hardware_concurrency();
   return hw == 0 ? 1 : static_cast<int>(hw);
 }

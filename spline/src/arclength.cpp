@@ -64,6 +64,8 @@ struct Speed {
   }
 };
 
+constexpr std::size_t kMaxIntervals = std::size_t(1) << 20;
+
 struct Estimate {
   double value, error;
 };
@@ -82,7 +84,11 @@ Estimate gauss_kronrod(const Speed& f, double a, double b) {
 // Appends the accepted subintervals of [a, b] (piece-local u) in order to the table.
 void integrate(const Speed& f, double offset, double a, double b, Estimate e, double tol_per_unit,
                int depth, ArcLength& out) {
-  if (e.error <= tol_per_unit * (b - a) || depth >= 60 || b - a <= 1e-15) {
+  // Also accepted: an estimate that is not finite (a speed beyond the range of a double; the
+  // caller reports it) and any interval once the table is this large, so that the work stays
+  // bounded for any curve.
+  if (e.error <= tol_per_unit * (b - a) || depth >= 60 || b - a <= 1e-15 || !std::isfinite(e.error) ||
+      out.t.size() >= kMaxIntervals) {
     out.t.push_back(b >= 1.0 ? offset + 1.0 : offset + b);
     out.s.push_back(out.s.back() + e.value);
     return;
@@ -140,6 +146,8 @@ ArcLength arc_length(const Curve& c, double tolerance) {
       integrate(f, static_cast<double>(i), cuts[k], cuts[k + 1], gauss_kronrod(f, cuts[k], cuts[k + 1]), tol, 0,
                 out);
   }
+  if (!std::isfinite(out.total()))
+    throw std::overflow_error("arc length: the curve's length is beyond the range of a double");
   return out;
 }
 

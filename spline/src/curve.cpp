@@ -112,10 +112,10 @@ std::size_t sample_count(const Curve& c, int grain) {
 
 namespace {
 
-// Compiled twice where the compiler can (x86-64 GCC/Clang): for AVX2 and for the baseline,
+// Compiled twice where the compiler can (x86-64 GCC; clang refuses target_clones with flatten): for AVX2 and for the baseline,
 // chosen at load time. No FMA contraction either way (ISO C++ mode), so both give the
 // same bits.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__SANITIZE_ADDRESS__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("avx2", "default"), flatten))
 #endif
 void sample_pieces(const double* ctrl, std::size_t pieces, int grain, int order, int dim, const double* E,

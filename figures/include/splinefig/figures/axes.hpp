@@ -15,8 +15,11 @@ struct AxisMap {
   Scale scale = Scale::Linear;
   double d0 = 0, d1 = 1;  // the range as given (dB for db axes)
   double p0 = 0, p1 = 1;  // pixels
+  char name = 0;          // 'x' or 'y', for messages
 
-  double transfer(double v) const;  // data -> the linear domain of the axis
+  // data -> the linear domain of the axis; throws std::domain_error for v <= 0 on a log axis
+  // (an element with such data is an error, never silently left out).
+  double transfer(double v) const;
   double to_pixel(double v) const;
   double from_pixel(double p) const;  // inverse, in the linear domain's terms mapped back to data
   double lo() const;  // the range in the linear domain
@@ -28,15 +31,25 @@ struct Tick {
   std::string label;
 };
 
+// Why [lo, hi] cannot be an axis range (empty if it can): both ends and the span must be
+// finite, the span at least kMinAxisSpan and at least kMinRelativeAxisSpan of the larger end's
+// magnitude, so that the pixel map and the ticks have distinct numbers to work with.
+std::string range_problem(double lo, double hi);
+inline constexpr double kMinAxisSpan = 1e-100;
+inline constexpr double kMinRelativeAxisSpan = 1e-12;
+// The most ticks an axis draws; a forced tick step that gives more is an error.
+inline constexpr int kMaxTicks = 1000;
+
 // Nice ticks for [lo, hi] (either order): steps 1, 2 or 5 times a power of ten, about
 // `target` of them, every tick inside the range (to 1e-9 of the step). `step` > 0 forces
-// the step. Labels print just the digits the step needs.
+// the step. Labels print just the digits the step needs. Throws std::invalid_argument when the
+// step would give more than kMaxTicks ticks; no ticks for a range without extent.
 std::vector<Tick> nice_ticks(double lo, double hi, double target, double step = 0);
 // The step nice_ticks would use.
 double nice_step(double lo, double hi, double target);
 // Decades 10^k inside [lo, hi] (lo, hi > 0), labelled "10^{k}" (label markup; 10^0 and 10^1
 // as powers too, a negative k with the minus sign U+2212); falls back to nice_ticks when the
-// range spans less than one decade.
+// range spans less than one decade. Throws std::invalid_argument unless 0 < lo, hi < inf.
 std::vector<Tick> log_ticks(double lo, double hi);
 // A number with `decimals` digits after the point ("-0" printed as "0").
 std::string format_number(double v, int decimals);

@@ -11,6 +11,7 @@
 #include <splinefig/spline/curve.hpp>
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,10 @@ struct SpecFileError : std::runtime_error {
 // Largest canvas: 32768 px a side and 2^28 pixels in all (after --scale).
 inline constexpr int kMaxCanvasSide = 32768;
 inline constexpr long long kMaxCanvasPixels = 1LL << 28;
+// Further limits checked where specs are validated, before any work (docs/limits.md).
+inline constexpr std::size_t kMaxSpecBytes = std::size_t(1) << 26;  // a spec file: 64 MiB
+inline constexpr std::size_t kMaxMarks = 100000;                    // x_marks, y_marks, curve marks
+inline constexpr double kMaxFontSize = 4096;                         // text sizes, px (also after --scale)
 
 struct Canvas {
   int width = 800, height = 500;
@@ -358,6 +363,9 @@ struct AxesSpec {
   std::optional<std::array<double, 4>> box;     // explicit pixel box [left, top, right, bottom]
   std::vector<PlotElement> elements;
   std::string where;  // "file:line" of the [axes] header, for messages
+  // "FILE:LINE: KEY" of each element's table (parallel to `elements`), naming it in errors
+  // found while drawing; may be shorter (then messages name the axes).
+  std::vector<std::string> element_origins;
 };
 
 using Item = std::variant<PolylineItem, PolygonItem, CircleItem, MarkerItem, TextItem, ImageItem, AxesSpec>;
@@ -376,9 +384,13 @@ struct FigureSpec {
   bool show_title = true;
   double title_size = 18;
   render::FontFamily font_family = render::FontFamily::Sans;  // of every text without its own
+  std::string title_origin;  // "FILE:LINE: title_size" (or title), for messages
   Canvas canvas;
   Layout layout;
   std::vector<Item> items;  // in document order
+  // "FILE:LINE: KEY" of each item's table (parallel to `items`), naming it in errors found
+  // while drawing; may be shorter (then messages name the file).
+  std::vector<std::string> item_origins;
 };
 
 // Reads and validates a spec file. Throws SpecFileError (one line: file, line, key).

@@ -26,8 +26,11 @@ struct UnwritableImage : UnwritableFile {
   using UnwritableFile::UnwritableFile;
 };
 
-// Largest image accepted, in float values (width * height * channels): 2^30, 4 GiB.
+// Largest image accepted, in float values (width * height * channels): 2^30, 4 GiB; and in
+// pixels (width * height): 2^28, as for a canvas. Both are checked from the file's header,
+// before any pixel data is decompressed (a PNG of a few KB can declare 20000 x 20000 zeros).
 inline constexpr std::uint64_t max_image_values = std::uint64_t(1) << 30;
+inline constexpr std::uint64_t max_image_pixels = std::uint64_t(1) << 28;
 
 enum class ReadMode {
   // The values the file holds, converted to float the way OpenImageIO converts them (8-bit
@@ -67,6 +70,10 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
 // or write, e.g. on a thread that would otherwise wait while others render. Never throws: a
 // module that cannot be loaded is reported by the first read or write.
 void preload_image_io() noexcept;
+// Reads only the header of the image file `path` and throws UnreadableImage if the image is
+// over the limits above, or is not an image at all; cheap, so that every input of a command
+// can be checked before any is decoded.
+void check_image_header(const std::string& path);
 
 // Throws UnreadableImage unless `path` is a structurally complete PNG (exposed for tests).
 void check_png_structure(const std::string& path);

@@ -61,7 +61,9 @@ void resample_into(const ImageView& src, Image& dst, const Kernel& k, const Resa
 void resample_into(const Image& src, Image& dst, const Kernel& k, const ResampleOptions& opt = {});
 Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt = {});
 
-// The worker count `threads` (0: hardware) resolves to.
+// The worker count `threads` (0: hardware) resolves to, at most kMaxResampleThreads (as the
+// command line's --threads): a huge count never reaches thread or chunk arithmetic.
+inline constexpr int kMaxResampleThreads = 256;
 int resolve_threads(int threads);
 
 }  // namespace splinefig

@@ -30,7 +30,9 @@ struct ArcLength {
   double total() const { return s.empty() ? 0.0 : s.back(); }
 };
 
-// Builds the table; `tolerance` is relative to the curve's length.
+// Builds the table; `tolerance` is relative to the curve's length. The work is bounded for any
+// curve (at most 2^20 intervals); throws std::overflow_error when the length is beyond the
+// range of a double (a knot at 1e155 squares to infinity).
 ArcLength arc_length(const Curve& c, double tolerance = 1e-13);
 
 // s(t): the length from 0 to t (t clamped to [0, segments()]).

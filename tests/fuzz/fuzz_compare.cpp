@@ -1,0 +1,39 @@
+// libFuzzer harness: two image files compared as `splinefig diff` does (as stored and in
+// linear light, with SSIM and FLIP). Input: a 2-byte big-endian length, the first file, the
+// second file. Any input must compare or end in one UnreadableImage line; anything else is a
+// finding.
+#include "fuzz_image_input.hpp"
+
+#include <splinefig/compare/compare.hpp>
+#include <splinefig/image/io.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace splinefig;
+  std::size_t first = 0;
+  if (size > 1 << 16 || !fuzz::split_pair(data, size, first)) return 0;
+  const std::string a = fuzz::image_file("a", data + 2, first);
+  const std::string b = fuzz::image_file("b", data + 2 + first, size - 2 - first);
+  for (const ReadMode mode : {ReadMode::as_stored, ReadMode::linear}) {
+    try {
+      const Image ia = read_image(a, mode), ib = read_image(b, mode);
+      compare::Options o;
+      o.threads = 1;
+      o.perceptual = ia.width * ia.height <= 4096;
+      o.shift = 1;
+      const compare::Comparison c = compare::compare_images(ia, ib, o);
+      (void)compare::text_report(c, o, a, b);
+      (void)compare::json_report(c, o, a, b);
+    } catch (const UnreadableImage& e) {
+      if (std::string(e.what()).find('\n') != std::string::npos) {
+        std::fprintf(stderr, "fuzz_compare: a message of more than one line: %s\n", e.what());
+        std::abort();
+      }
+    }
+  }
+  std::remove(a.c_str());
+  std::remove(b.c_str());
+  return 0;
+}

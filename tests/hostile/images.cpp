@@ -1,0 +1,104 @@
+// Image inputs are checked from their headers before anything is decoded: a PNG declaring
+// 100000 x 100000 pixels and a decompression bomb of a few hundred KB (20000 x 20000 zeros)
+// are refused in time with one line, exit 4 for diff ("unreadable", not "the images differ"),
+// exit 2 for resample (its code for any error), a FILE:LINE: KEY error for [[image]], and no
+// output.
+#include "hostile.hpp"
+
+#include <splinefig/image/io.hpp>
+
+#include <zlib.h>
+
+#include <cstdint>
+
+using namespace splinefig::hostile;
+
+namespace {
+
+std::string be32(std::uint32_t v) {
+  return {char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+}
+
+std::string chunk(const std::string& type, const std::string& data) {
+  const std::string td = type + data;
+  const uLong crc = crc32(0L, reinterpret_cast<const Bytef*>(td.data()), uInt(td.size()));
+  return be32(std::uint32_t(data.size())) + td + be32(std::uint32_t(crc));
+}
+
+// A grey 8-bit PNG of w x h zero pixels whose IDAT holds `rows` rows (all of them: a
+// complete, valid file).
+std::string zero_png(std::uint32_t w, std::uint32_t h, std::uint32_t rows) {
+  z_stream zs{};
+  deflateInit(&zs, 9);
+  const std::string row(w + 1, '\0');
+  std::string out(1 << 16, '\0'), idat;
+  for (std::uint32_t r = 0; r <= rows; ++r) {
+    zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(row.data()));
+    zs.avail_in = r < rows ? uInt(row.size()) : 0;
+    const int flush = r < rows ? Z_NO_FLUSH : Z_FINISH;
+    do {
+      zs.next_out = reinterpret_cast<Bytef*>(out.data());
+      zs.avail_out = uInt(out.size());
+      deflate(&zs, flush);
+      idat.append(out.data(), out.size() - zs.avail_out);
+    } while (zs.avail_out == 0);
+  }
+  deflateEnd(&zs);
+  const std::string ihdr = be32(w) + be32(h) + std::string{8, 0, 0, 0, 0};
+  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) + chunk("IEND", "");
+}
+
+void check_unreadable(const std::vector<std::string>& args, const fs::path& dir, int code, const std::string& says) {
+  const Outcome o = run_in(dir, args);
+  INFO(args[0] << " (" << o.seconds << " s): " << o.err);
+  CHECK_FALSE(o.killed);
+  CHECK(o.code == code);
+  CHECK(splinefig::test::count_lines(o.err) == 1);
+  CHECK_THAT(o.err, Catch::Contains(says));
+  CHECK_FALSE(fs::exists(dir / "out.png"));
+}
+
+}  // namespace
+
+TEST_CASE("a PNG header declaring 100000 x 100000 pixels is refused before decoding, by every command") {
+  const fs::path dir = scratch();
+  write_file(dir / "huge.png", zero_png(100000, 100000, 1));
+  write_file(dir / "small.png", zero_png(4, 4, 4));
+  const std::string says = "huge.png: image too large (100000 x 100000 pixels declared in the header, limit 2^28 pixels)";
+  check_unreadable({"diff", "small.png", "huge.png"}, dir, 4, says);
+  check_unreadable({"diff", "huge.png", "small.png"}, dir, 4, says);
+  check_unreadable({"resample", "huge.png", "-o", "out.png", "--filter", "bspline", "--size", "8x8"}, dir,
+                   2, says);
+  fs::remove_all(dir);
+  check_refused("huge_image", "[[image]]\nfile = \"" + (fs::temp_directory_path() / "huge.png").string() + "\"\n",
+                "no such image file");  // the path is checked first
+}
+
+TEST_CASE("a decompression bomb (20000 x 20000 zeros) is refused from its header by diff, resample and specs") {
+  const fs::path dir = scratch();
+  write_file(dir / "bomb.png", zero_png(20000, 20000, 20000));
+  write_file(dir / "small.png", zero_png(4, 4, 4));
+  const std::string says = "bomb.png: image too large (20000 x 20000 pixels declared in the header, limit 2^28 pixels)";
+  check_unreadable({"diff", "small.png", "bomb.png"}, dir, 4, says);
+  check_unreadable({"resample", "bomb.png", "-o", "out.png", "--filter", "bspline", "--size", "8x8"}, dir,
+                   2, says);
+  write_file(dir / "bomb.toml", "[canvas]\nwidth = 10\nheight = 10\n[[image]]\nfile = \"bomb.png\"\n");
+  check_unreadable({"render", "bomb.toml", "-o", "out.png"}, dir, 2, "bomb.toml:5: image[0].file: ./bomb.png: image too large");
+  write_file(dir / "bomb_axes.toml", "[axes]\n[[axes.image]]\nfile = \"bomb.png\"\nextent = [0, 1, 0, 1]\n");
+  check_unreadable({"render", "bomb_axes.toml", "-o", "out.png"}, dir, 2,
+                   "bomb_axes.toml:3: axes.image[0].file: ./bomb.png: image too large");
+  fs::remove_all(dir);
+}
+
+// Found by fuzz_resample: a PNG whose chunk type bytes hold a newline gave a two-line message.
+TEST_CASE("an unreadable PNG's message is one line whatever bytes its chunk types hold") {
+  const std::string path = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/hostile/data/png_chunk_type_newline.png";
+  try {
+    (void)splinefig::read_image(path);
+    FAIL("the corrupt PNG was read");
+  } catch (const splinefig::UnreadableImage& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find('\n') == std::string::npos);
+    CHECK_THAT(e.what(), Catch::Contains("corrupt PNG"));
+  }
+}
