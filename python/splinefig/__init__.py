@@ -441,7 +441,8 @@ class Scene:
         return self
 
     def text(self, text: str, at: Any, *, size: float = 14.0, color: Any = "#000000", halign: str = "left",
-             valign: str = "baseline", font: str = "DejaVuSans") -> "Scene":
+             valign: str = "baseline", family: str = "sans", weight: str = "normal", italic: bool = False,
+             angle: float = 0.0) -> "Scene":
         a = _numeric(at, "at", np.float64).ravel()
         if a.size != 2 or not np.isfinite(a).all():
             raise ValueError("at: expected 2 finite coordinates")
@@ -449,7 +450,9 @@ class Scene:
         if s <= 0:
             raise ValueError(f"size: {s} is not positive")
         args = (_str(text, "text"), a[0], a[1], s, _color(color, "color"), _choice(halign, "halign", ("left", "center", "right")),
-                _choice(valign, "valign", ("baseline", "middle", "top", "bottom")), _str(font, "font"))
+                _choice(valign, "valign", ("baseline", "middle", "top", "bottom")),
+                _choice(family, "family", ("sans", "serif", "mono")), _choice(weight, "weight", ("normal", "bold")),
+                bool(italic), _real(angle, "angle"))
         with self._lock:
             _library("text", self._s.text, *args)
         return self

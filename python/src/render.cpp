@@ -110,14 +110,19 @@ void bind_render(py::module_& m) {
         for (const Vec2& p : vec2s(pts)) s.marker(shp, p, size, color_of(color));
       })
       .def("text", [](render::Scene& s, const std::string& text, double x, double y, double size, const std::array<float, 4>& color,
-                      const std::string& halign, const std::string& valign, const std::string& font) {
+                      const std::string& halign, const std::string& valign, const std::string& family, const std::string& weight,
+                      bool italic, double angle) {
         render::TextStyle t;
         t.size = size;
         t.color = color_of(color);
         t.halign = pick<render::HAlign>(halign, "halign", {{"left", render::HAlign::Left}, {"center", render::HAlign::Center}, {"right", render::HAlign::Right}});
         t.valign = pick<render::VAlign>(valign, "valign", {{"baseline", render::VAlign::Baseline}, {"middle", render::VAlign::Middle},
                                                            {"top", render::VAlign::Top}, {"bottom", render::VAlign::Bottom}});
-        t.font = font;
+        t.family = pick<render::FontFamily>(family, "family", {{"sans", render::FontFamily::Sans}, {"serif", render::FontFamily::Serif},
+                                                               {"mono", render::FontFamily::Mono}});
+        t.weight = pick<render::FontWeight>(weight, "weight", {{"normal", render::FontWeight::Normal}, {"bold", render::FontWeight::Bold}});
+        t.italic = italic;
+        t.angle = angle;
         s.text(text, {x, y}, t);
       })
       .def("render", [](const render::Scene& s, int threads) {
