@@ -26,10 +26,11 @@ std::string extension_of(const std::string& path) {
 const splinefig::cli::Registration reg{
     "render", "Render one TOML figure spec to a PNG or EXR image", [](CLI::App& app) {
       auto a = std::make_shared<RenderArgs>();
-      app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->required();
-      app.add_option("-o,--output", a->out, "Output image: .png (8-bit sRGB) or .exr (float linear)")->required();
-      app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1)");
-      app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
+      app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->type_name("PATH")->required();
+      app.add_option("-o,--output", a->out, "Output image: .png (8-bit sRGB) or .exr (float linear)")->type_name("PATH")->required();
+      app.add_option("--scale", a->scale, "Output pixels per spec pixel")->capture_default_str();
+      app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
+      app.footer("Example: splinefig render figures/specs/bias.toml -o bias.png --scale 2");
       return splinefig::cli::Runner([a] {
         using splinefig::cli::Failure;
         namespace fig = splinefig::figures;
