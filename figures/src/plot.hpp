@@ -95,6 +95,13 @@ void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occup
 void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter& p, const Guides& g);
 void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
                  const Guides& g);
+// The legend's width and height for entries with these labels.
+std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const Painter& p,
+                                  const Guides& g);
+// The labels of the elements that go to the legend (what draw_elements() will make entries of).
+std::vector<std::string> legend_labels(const AxesSpec& ax);
+// The gap between the plot box and a legend outside it.
+inline constexpr double kLegendOutsideGap = 12;
 
 // Places text next to one of the candidate points (pixels, best first) where it covers the
 // least drawn data and stays inside `box`; marks the chosen spot as used and returns the

@@ -339,7 +339,8 @@ struct AxisSpec {
   std::vector<double> marks;                    // knots marked on the axis (small triangles)
 };
 
-enum class LegendPlace { Auto, None, UpperLeft, UpperRight, LowerLeft, LowerRight, UpperCenter, LowerCenter };
+// OutsideRight: right of the plot box, its top level with the box's; the box narrows to make room.
+enum class LegendPlace { Auto, None, UpperLeft, UpperRight, LowerLeft, LowerRight, UpperCenter, LowerCenter, OutsideRight };
 
 struct AxesSpec {
   AxisSpec x, y;
