@@ -109,6 +109,11 @@ inline constexpr double kLegendOutsideGap = 12;
 Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>& candidates, const Rect& box,
                  const Painter& p, Occupancy& occ, double distance = 7);
 
+// The pixel outline of a fill with `under` (plot_fill.cpp): the element's samples, closed by the
+// baseline or by the `to` element's samples reversed.
+std::vector<Vec2> fill_under_polygon(const PreparedAxes& prepared, const FillElement& f, const PixelMap& map,
+                                     double tol);
+
 // Polyline clipping against a rectangle: the runs inside.
 std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& pts, bool closed, const Rect& r);
 std::vector<Vec2> clip_polygon(const std::vector<Vec2>& pts, const Rect& r);

@@ -39,6 +39,8 @@ void data_bounds(const PreparedAxes& prepared, std::array<double, 2>& xb, std::a
     } else if (const auto* f = std::get_if<FillElement>(&e)) {
       for (Vec2 p : f->upper) add(p);
       for (Vec2 p : f->lower) add(p);
+      if (!f->under.empty() && f->to.empty() && (prepared.axes.y.scale != Scale::Log || f->baseline > 0))
+        grow(yb, hy, f->baseline);
     } else if (const auto* im = std::get_if<ImageElement>(&e)) {
       add({im->extent[0], im->extent[2]});
       add({im->extent[1], im->extent[3]});

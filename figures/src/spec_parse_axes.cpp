@@ -124,6 +124,7 @@ SeriesElement parse_series(TableReader& r, LookDefault defaults, const char* wha
 }
 
 FillElement parse_fill(TableReader& r) {
+  if (r.has("under")) return parse_fill_under(r);  // spec_fill.cpp
   FillElement f;
   if (r.has("points")) {
     f.polygon = true;
@@ -274,6 +275,7 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   r.finish();
   std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [line, e] : elements) ax.elements.push_back(std::move(e));
+  check_fill_references(ax);  // spec_fill.cpp
 
   if (ax.y.scale == Scale::Log) {
     for (const auto& e : ax.elements)

@@ -178,6 +178,11 @@ struct FillElement {
   bool polygon = false;
   Color color;
   Labelling label;
+  // `under = "LABEL"`: the area between the curve, kernel or series of that label and the
+  // line y = baseline, or the element labelled `to` (upper and lower are then empty).
+  std::string under, to;
+  double baseline = 0;
+  std::string origin, to_origin;  // "FILE:LINE: axes.fill[i].under" (.to), for the check of the labels
 };
 
 struct TextElement {
