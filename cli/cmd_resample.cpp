@@ -50,16 +50,36 @@ struct Progress : cli::ProgressLine {
 };
 
 // --bits for the output's format: png 8 or 16 (default: 16 for a 16-bit PNG source, else 8);
-// exr float only.
+// jpg 8; exr float. 32 stands for float.
 int output_bits(const std::string& bits, const std::string& ext, const FileFormat& source) {
+  const std::string b = bits.empty() ? "" : bits;
   if (ext == ".exr") {
-    if (!bits.empty() && bits != "float") throw Failure("--bits " + bits + ": .exr is written as float");
+    if (!b.empty() && b != "float") throw Failure("--bits " + b + ": .exr is written as float");
     return 32;
   }
-  if (bits.empty()) return source.name == "png" && source.bits == 16 ? 16 : 8;
-  if (bits == "8") return 8;
-  if (bits == "16") return 16;
-  throw Failure("--bits " + cli::printable(bits) + ": PNG holds 8 or 16 bits (float needs .exr)");
+  if (ext == ".jpg" || ext == ".jpeg") {
+    if (!b.empty() && b != "8") throw Failure("--bits " + b + ": JPEG holds 8 bits");
+    return 8;
+  }
+  if (b.empty()) return source.name == "png" && source.bits == 16 ? 16 : 8;
+  if (b == "8") return 8;
+  if (b == "16") return 16;
+  throw Failure("--bits " + cli::printable(b) + ": PNG holds 8 or 16 bits (float needs .exr)");
+}
+
+// For a format without alpha (JPEG): the image composited over white, its alpha dropped. The
+// values are linear and premultiplied, so over white a colour becomes c + (1 - alpha).
+Image over_white(const Image& im) {
+  if (im.alpha_channel < 0) return im;
+  const int a = im.alpha_channel, C = im.channels;
+  Image out = Image::zeros(im.width, im.height, C - 1, im.encoding);
+  std::size_t o = 0;
+  for (std::size_t p = 0; p < im.pixels.size(); p += static_cast<std::size_t>(C)) {
+    const float alpha = std::clamp(im.pixels[p + static_cast<std::size_t>(a)], 0.0f, 1.0f);
+    for (int c = 0; c < C; ++c)
+      if (c != a) out.pixels[o++] = im.pixels[p + static_cast<std::size_t>(c)] + (1.0f - alpha);
+  }
+  return out;
 }
 
 int scaled(int src, double s, const char* axis, const std::string& text) {
@@ -91,8 +111,9 @@ int run(const Options& o) {
   }
   std::string ext = std::filesystem::path(o.out).extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".png" && ext != ".exr")
-    throw Failure("-o " + o.out + ": unsupported output format '" + ext + "' (use .png or .exr)");
+  const bool jpeg = ext == ".jpg" || ext == ".jpeg";
+  if (ext != ".png" && ext != ".exr" && !jpeg)
+    throw Failure("-o " + o.out + ": unsupported output format '" + ext + "' (use .png, .jpg or .exr)");
   if (!o.bits.empty() && o.bits != "8" && o.bits != "16" && o.bits != "float")
     throw Failure("--bits: '" + cli::printable(o.bits) + "' is not 8, 16 or float");
 
@@ -130,8 +151,8 @@ int run(const Options& o) {
     out = resample(src, size.first, size.second, filter, opt);
     progress.say("writing " + o.out);
     WriteOptions w;
-    w.bits = bits == 32 ? 8 : bits;
-    write_image(o.out, out, w);
+    w.bits = bits;
+    write_image(o.out, jpeg ? over_white(out) : out, w);
   } catch (const UnwritableImage& e) {
     throw Failure(e.what());
   } catch (const std::invalid_argument& e) {
@@ -151,7 +172,7 @@ const splinefig::cli::Registration reg{
     [](CLI::App& app) {
       auto o = std::make_shared<Options>();
       app.add_option("IN", o->in, "Input image (PNG or EXR)")->type_name("PATH")->required();
-      app.add_option("-o,--output", o->out, "Output image (.png or .exr)")->type_name("PATH")->required();
+      app.add_option("-o,--output", o->out, "Output image: .png, .jpg (alpha composited over white) or .exr")->type_name("PATH")->required();
       app.add_option("--size", o->size, "Output size WxH; Wx or xH keeps the aspect ratio")->type_name("WxH");
       app.add_option("--scale", o->scale, "Scale factor S or SX,SY (output size rounded)")->type_name("FLOAT[,FLOAT]");
       app.add_option("--filter", o->filter,
@@ -162,7 +183,7 @@ const splinefig::cli::Registration reg{
           ->type_name("NAME")
           ->capture_default_str();
       app.add_option("--bits", o->bits,
-                     "Output bits: 8 or 16 for .png (when not given: 16 for a 16-bit PNG input, else 8), float for .exr")
+                     "Output bits: .png 8 or 16 (when not given: 16 for a 16-bit PNG input, else 8), .jpg 8, .exr float")
           ->type_name("8|16|float");
       app.add_flag("--interpolating", o->interpolating,
                    "Prefilter so that an approximating spline (bspline, tensioned-bspline, beta) "

@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -256,5 +257,46 @@ TEST_CASE("progress: resample and diff --perceptual on large images show a line 
   CHECK_THAT(shown, Catch::Contains("splinefig resample: filtering 2400x1500 to 1200x750..."));
   CHECK_THAT(shown, Catch::Contains("\x1b[K"));  // and erased when done
   CHECK_THAT(on_terminal(diff), Catch::Contains("splinefig diff: comparing 2400x1500 (SSIM, FLIP)..."));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("resample: JPEG by the output's extension, alpha composited over white") {
+  const fs::path dir = scratch("formats");
+  // The same square drawn on transparency and on white: over white, the first is the second.
+  const std::string square = "[[polygon]]\npoints = [[20, 20], [100, 20], [100, 60], [20, 60]]\ncolor = \"#204080\"\n";
+  write_text(dir / "clear.toml", "[canvas]\nwidth = 120\nheight = 80\nbackground = \"#00000000\"\n" + square);
+  write_text(dir / "white.toml", "[canvas]\nwidth = 120\nheight = 80\nbackground = \"#ffffff\"\n" + square);
+  for (const char* name : {"clear", "white"})
+    REQUIRE(run({"render", (dir / (std::string(name) + ".toml")).string(), "-o", (dir / (std::string(name) + ".png")).string()}).code == 0);
+  auto resample = [&](const std::string& in, const std::string& out, std::vector<std::string> extra = {}) {
+    std::vector<std::string> a{"resample", (dir / in).string(), "-o", (dir / out).string(), "--filter", "tent", "--size", "60x"};
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run(a);
+  };
+  REQUIRE(resample("clear.png", "clear.jpg").code == 0);
+  REQUIRE(resample("white.png", "white-small.png").code == 0);
+  const std::string jpg = slurp(dir / "clear.jpg");
+  REQUIRE(jpg.size() > 3);
+  CHECK(jpg.substr(0, 3) == "\xff\xd8\xff");  // a JPEG file
+  // JPEG is lossy: within 6% of the white-background picture in every value (its edges), where
+  // transparency left black or dropped would be off by 1.
+  const auto same = run({"diff", (dir / "white-small.png").string(), (dir / "clear.jpg").string(), "--ignore-alpha",
+                         "--fail", "0.06"});
+  INFO(same.out << same.err);
+  CHECK(same.code == 0);
+  for (const auto& [out, bits, says] : std::vector<std::array<std::string, 3>>{
+           {"x.jpg", "16", "--bits 16: JPEG holds 8 bits"},
+           {"x.exr", "8", "--bits 8: .exr is written as float"}}) {
+    const auto r = resample("white.png", out, {"--bits", bits});
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains(says));
+    CHECK(!fs::exists(dir / out));
+  }
+  for (const char* other : {"x.bmp", "x.tif"}) {
+    const auto r = resample("white.png", other);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Catch::Contains("unsupported output format '" + fs::path(other).extension().string() +
+                                      "' (use .png, .jpg or .exr)"));
+  }
   fs::remove_all(dir);
 }
