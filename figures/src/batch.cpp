@@ -75,6 +75,8 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
   } catch (const std::system_error&) {
   }
   if (pool.empty()) work();
+  // While the workers render, this thread loads the image I/O module their writes will need.
+  preload_image_io();
   for (size_t i = 0; i < specs.size(); ++i) {
     BatchResult r;
     {

@@ -1,10 +1,10 @@
-// Strict image reading through OpenImageIO (see io.hpp).
+// Strict image reading: checks here, decoding by the codec module (codec.hpp; see io.hpp).
 #include <splinefig/image/io.hpp>
 #include <splinefig/image/srgb.hpp>
 
 #include "one_line.hpp"
 
-#include <OpenImageIO/imageio.h>
+#include "codec.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <system_error>
 
 namespace splinefig {
@@ -56,6 +57,14 @@ void to_linear_associated(Image& im, bool srgb, bool associate, int bits) {
   }
 }
 
+const detail::ImageCodec& load_codec(const std::string& path) {
+  try {
+    return detail::image_codec();
+  } catch (const std::exception& e) {
+    unreadable(path, e.what());
+  }
+}
+
 }  // namespace
 
 Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
@@ -70,49 +79,48 @@ Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
   }
   if (has_png_signature(path)) check_png_structure(path);
 
+  const detail::ImageCodec& codec = load_codec(path);
+  detail::CodecHeader spec;
+  std::string error;
+  // Linear reading associates alpha itself, after decoding the straight values.
+  std::unique_ptr<void, void (*)(void*)> in(codec.open(path.c_str(), mode == ReadMode::linear, spec, error), codec.close);
+  if (!in) unreadable(path, one_line(error));
   try {
-    OIIO::ImageSpec config;
-    // Linear reading associates alpha itself, after decoding the straight values.
-    if (mode == ReadMode::linear) config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path, &config);
-    if (!in) unreadable(path, one_line(OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
     if (spec.deep) unreadable(path, "deep images are not supported");
     if (spec.depth > 1) unreadable(path, "volume images are not supported");
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+    if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0)
       unreadable(path, "empty image (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + ", " +
-                           std::to_string(spec.nchannels) + " channels)");
-    const std::uint64_t values = std::uint64_t(spec.width) * std::uint64_t(spec.height) * std::uint64_t(spec.nchannels);
+                           std::to_string(spec.channels) + " channels)");
+    const std::uint64_t values = std::uint64_t(spec.width) * std::uint64_t(spec.height) * std::uint64_t(spec.channels);
     if (values > max_image_values)
       unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
-                           std::to_string(spec.nchannels) + " values, limit 2^30)");
+                           std::to_string(spec.channels) + " values, limit 2^30)");
     Image im;
     im.width = spec.width;
     im.height = spec.height;
-    im.channels = spec.nchannels;
+    im.channels = spec.channels;
     im.x = spec.x;
     im.y = spec.y;
-    im.channel_names = spec.channelnames;
+    im.channel_names = spec.channel_names;
     im.channel_names.resize(std::size_t(im.channels));
     const auto defaults = default_channel_names(im.channels);
     for (int c = 0; c < im.channels; ++c)
       if (im.channel_names[std::size_t(c)].empty()) im.channel_names[std::size_t(c)] = defaults[std::size_t(c)];
     im.alpha_channel = spec.alpha_channel < im.channels ? spec.alpha_channel : -1;
-    const bool integer = !spec.format.is_floating_point();
-    const bool srgb = integer && !iequals(spec.get_string_attribute("oiio:ColorSpace"), "linear");
+    const bool integer = !spec.floating;
+    const bool srgb = integer && !iequals(spec.color_space, "linear");
     im.encoding = srgb ? Encoding::srgb : Encoding::linear;
-    const int bits = int(spec.format.size()) * 8;
-    if (format) *format = FileFormat{in->format_name(), bits};
+    const int bits = spec.bits;
+    if (format) *format = FileFormat{spec.format_name, bits};
     try {
       im.pixels.resize(std::size_t(values));
     } catch (const std::bad_alloc&) {
       unreadable(path, "image too large to hold in memory");
     }
-    const bool ok = in->read_image(0, 0, 0, im.channels, OIIO::TypeFloat, im.pixels.data());
-    const std::string msg = in->has_error() ? in->geterror() : std::string();
-    if (!ok || !msg.empty()) unreadable(path, one_line(msg.empty() ? "cannot read pixel data" : msg));
-    const bool straight = spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
-    in->close();
+    bool straight = false;
+    if (!codec.read(in.get(), im.pixels.data(), straight, error))
+      unreadable(path, one_line(error.empty() ? "cannot read pixel data" : error));
+    in.reset();
     if (mode == ReadMode::linear && (srgb || straight)) {
       to_linear_associated(im, srgb, straight, bits);
       im.encoding = Encoding::linear;

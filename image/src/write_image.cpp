@@ -1,16 +1,16 @@
-// Image writing: the conversion to the file's encoding, OpenImageIO encoding into memory, and
-// an atomic publication of the bytes (see io.hpp).
+// Image writing: the conversion to the file's encoding, encoding into memory by the codec module
+// (codec.hpp), and an atomic publication of the bytes (see io.hpp).
 #include <splinefig/image/io.hpp>
 #include <splinefig/image/srgb.hpp>
 #include <splinefig/version.hpp>
 
 #include "one_line.hpp"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "codec.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 
@@ -45,6 +45,12 @@ std::vector<T> integer_values(const Image& im) {
   for (std::size_t p = 0; p < im.pixels.size(); p += std::size_t(C)) {
     const float* px = im.pixels.data() + p;
     T* o = out.data() + p;
+    // Figures are mostly runs of one colour: a pixel equal to the one before (bit for bit)
+    // gets the same values.
+    if (p != 0 && (C == 4 ? std::memcmp(px, px - 4, 16) == 0 : std::memcmp(px, px - C, sizeof(float) * std::size_t(C)) == 0)) {
+      std::memcpy(o, o - C, sizeof(T) * std::size_t(C));
+      continue;
+    }
     const float alpha = a >= 0 ? std::clamp(px[a], 0.0f, 1.0f) : 1.0f;
     for (int c = 0; c < C; ++c) {
       if (c == a) {
@@ -83,54 +89,59 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   if (png && options.bits != 8 && options.bits != 16)
     unwritable(path, "PNG holds 8 or 16 bits per channel, not " + std::to_string(options.bits));
 
-  const OIIO::TypeDesc type = floats ? OIIO::TypeDesc::FLOAT
-                              : options.bits == 16 ? OIIO::TypeDesc::UINT16
-                                                   : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(im.width, im.height, im.channels, type);
-  spec.x = spec.full_x = im.x;
-  spec.y = spec.full_y = im.y;
-  if (int(im.channel_names.size()) == im.channels) spec.channelnames = im.channel_names;
+  detail::CodecImage spec;
+  spec.width = im.width;
+  spec.height = im.height;
+  spec.channels = im.channels;
+  spec.x = im.x;
+  spec.y = im.y;
+  if (int(im.channel_names.size()) == im.channels) spec.channel_names = im.channel_names;
   spec.alpha_channel = im.alpha_channel < im.channels ? im.alpha_channel : -1;
-  spec.attribute("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
-  if (!options.description.empty()) spec.attribute("ImageDescription", options.description);
+  spec.type = floats ? detail::CodecType::f32 : options.bits == 16 ? detail::CodecType::u16 : detail::CodecType::u8;
+  auto& text = spec.string_attributes;
+  text.emplace_back("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
+  if (!options.description.empty()) text.emplace_back("ImageDescription", options.description);
 
   Image linear;
   std::vector<std::uint8_t> bytes;
   std::vector<std::uint16_t> words;
-  const void* data = nullptr;
   if (floats) {
-    spec.attribute("oiio:ColorSpace", "Linear");
-    if (ext == ".exr") spec.attribute("compression", "zip");
+    text.emplace_back("oiio:ColorSpace", "Linear");
+    if (ext == ".exr") text.emplace_back("compression", "zip");
     if (im.encoding == Encoding::linear) {
-      data = im.pixels.data();
+      spec.data = im.pixels.data();
     } else {
       linear = to_linear(im);
-      data = linear.pixels.data();
+      spec.data = linear.pixels.data();
     }
   } else {
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    spec.attribute("oiio:UnassociatedAlpha", 1);  // the values are straight already
-    if (jpeg) spec.attribute("Compression", "jpeg:95");
-    if (jpeg) spec.attribute("jpeg:subsampling", "4:4:4");  // no chroma halved at colour edges
+    text.emplace_back("oiio:ColorSpace", "sRGB");
+    spec.int_attributes.emplace_back("oiio:UnassociatedAlpha", 1);  // the values are straight already
+    // zlib level 4 without row filters: for figures (flat colour, sharp edges) as small as
+    // libpng's default (level 6, adaptive filters; +3% over the built-in figures) and twice
+    // as fast to encode.
+    spec.int_attributes.emplace_back("png:compressionLevel", 4);
+    spec.int_attributes.emplace_back("png:filter", 8);  // PNG_FILTER_NONE
+    if (jpeg) text.emplace_back("Compression", "jpeg:95");
+    if (jpeg) text.emplace_back("jpeg:subsampling", "4:4:4");  // no chroma halved at colour edges
     if (options.bits == 16) {
       words = integer_values<std::uint16_t>(im);
-      data = words.data();
+      spec.data = words.data();
     } else {
       bytes = integer_values<std::uint8_t>(im);
-      data = bytes.data();
+      spec.data = bytes.data();
     }
   }
 
+  const detail::ImageCodec* codec = nullptr;
+  try {
+    codec = &detail::image_codec();
+  } catch (const std::exception& e) {
+    unwritable(path, e.what());
+  }
   std::vector<unsigned char> file;
-  OIIO::Filesystem::IOVecOutput memory(file);
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) unwritable(path, one_line(OIIO::geterror()));
-  if (!out->set_ioproxy(&memory)) unwritable(path, "cannot encode this format in memory");
-  if (!out->open(path, spec)) unwritable(path, one_line(out->geterror()));
-  const bool ok = out->write_image(type, data);
-  const bool closed = out->close();
-  if (!ok || !closed || out->has_error()) unwritable(path, one_line(out->geterror()));
-  out.reset();
+  std::string error;
+  if (!codec->encode(path.c_str(), spec, file, error)) unwritable(path, one_line(error));
   try {
     write_file_atomically(path, file);
   } catch (const UnwritableFile& e) {

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <system_error>
 #include <thread>
 
@@ -89,8 +91,8 @@ Image rasterize(const Scene& scene, int threads) {
 
   Geometry geom;
   const auto& items = scene.items();
-  auto prepare = [&](std::size_t i, Prepared& p) {
-    prepare_item(items[i], shift, clip, geom, p, W, H);
+  auto prepare = [&](std::size_t i, Prepared& p, Geometry& into) {
+    prepare_item(items[i], shift, clip, into, p, W, H);
     if (p.is_text || p.raster || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
@@ -117,7 +119,7 @@ Image rasterize(const Scene& scene, int threads) {
       geom.verts.clear();
       geom.chains.clear();
       p = Prepared{};
-      prepare(i, p);
+      prepare(i, p, geom);
       if (p.row1 <= p.row0) continue;
       if (p.raster) {
         composite_raster(*p.raster, img, 0, H);
@@ -133,10 +135,53 @@ Image rasterize(const Scene& scene, int threads) {
     return img;
   }
 
+  // Items are prepared by the threads too: in runs of consecutive items, each run into a
+  // geometry of its own. An item's chains and vertices are the same in any run (they are
+  // appended in order and only their relative order matters), so the bytes do not depend on
+  // how items fall into runs.
   std::vector<Prepared> prep;
   reserve_huge(prep, items.size());
   prep.resize(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i) prepare(i, prep[i]);
+  const std::size_t runs = std::min<std::size_t>(items.size(), static_cast<std::size_t>(nthreads) * 8);
+  std::vector<Geometry> geoms(runs);
+  std::vector<std::uint32_t> run_of(items.size());
+  {
+    auto run_begin = [&](std::size_t r) { return r * items.size() / runs; };
+    // Text and image items first, on this thread, as before: their preparation may call
+    // into libraries that start threads of their own.
+    using Kind = Scene::Item::Kind;
+    auto on_this_thread = [&](std::size_t i) { return items[i].kind == Kind::Text || items[i].kind == Kind::Image; };
+    for (std::size_t r = 0; r < runs; ++r)
+      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) {
+        run_of[i] = static_cast<std::uint32_t>(r);
+        if (on_this_thread(i)) prepare(i, prep[i], geoms[r]);
+      }
+    std::atomic<std::size_t> next_run{0};
+    std::mutex failure_mutex;
+    std::exception_ptr failure;
+    auto preparer = [&]() {
+      try {
+        for (;;) {
+          const std::size_t r = next_run.fetch_add(1);
+          if (r >= runs) return;
+          for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i)
+            if (!on_this_thread(i)) prepare(i, prep[i], geoms[r]);
+        }
+      } catch (...) {  // rethrown on this thread once every preparer has stopped
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next_run = runs;
+      }
+    };
+    std::vector<std::thread> pool;
+    try {
+      for (int t = 1; t < nthreads; ++t) pool.emplace_back(preparer);
+    } catch (const std::system_error&) {
+    }
+    preparer();
+    for (auto& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+  }
   // Which items touch which band, in item order.
   std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
   for (std::uint32_t i = 0; i < prep.size(); ++i) {
@@ -157,10 +202,11 @@ Image rasterize(const Scene& scene, int threads) {
       const int r0 = b * kBandRows, r1 = std::min(H, r0 + kBandRows);
       for (std::uint32_t i : band_items[static_cast<std::size_t>(b)]) {
         const Prepared& p = prep[i];
+        const Geometry& g = geoms[run_of[i]];
         if (p.raster) composite_raster(*p.raster, img, r0, r1);
         else if (p.is_text) composite_mask(p, img, r0, r1);
-        else if (box) render_box(geom, p, img, r0, r1, row, sweep);
-        else render_filtered(geom, p, grid, img, r0, r1, fs, sweep);
+        else if (box) render_box(g, p, img, r0, r1, row, sweep);
+        else render_filtered(g, p, grid, img, r0, r1, fs, sweep);
       }
     }
   };

@@ -298,7 +298,7 @@ void parallel_chunks(int chunks, int threads, F&& work) {
 }
 
 struct Plan {
-  const Image& src;
+  ImageView src;
   Image& dst;
   AxisWeights ax, ay;
   Edge edge;
@@ -339,7 +339,7 @@ void filter_row(const Plan& p, const float* row, float* ext, float* out) {
   const RowSplit& r = p.split;
   if (!r.direct) {
     const long lo = p.ext_lo();
-    std::memcpy(ext + (0 - lo) * C, row, p.src.row_stride() * sizeof(float));
+    std::memcpy(ext + (0 - lo) * C, row, p.src.row_length() * sizeof(float));
     extend(ext, lo, p.ext_hi(), S, C, p.edge);
     horizontal(ext, lo, p.ax, 0, p.ax.dst, C, out);
     return;
@@ -441,7 +441,7 @@ void vertical_first(const Plan& p, int threads) {
     const long lo = p.ext_lo();
     for (int y = y0; y < y1; ++y) {
       taps.gather(p, y);
-      vertical(taps.rows.data(), taps.w.data(), static_cast<int>(taps.rows.size()), p.src.row_stride(),
+      vertical(taps.rows.data(), taps.w.data(), static_cast<int>(taps.rows.size()), p.src.row_length(),
                ext.data() + (0 - lo) * C, false);
       extend(ext.data(), lo, p.ext_hi(), p.src.width, C, p.edge);
       horizontal(ext.data(), lo, p.ax, 0, p.ax.dst, C, p.dst.row(y));
@@ -457,35 +457,44 @@ int resolve_threads(int threads) {
   return hw == 0 ? 1 : static_cast<int>(hw);
 }
 
-void resample_into(const Image& src_in, Image& dst, const Kernel& k, const ResampleOptions& opt) {
+void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const ResampleOptions& opt) {
   if (src_in.width < 1 || src_in.height < 1 || src_in.channels < 1)
     throw std::invalid_argument("resample: the source image is empty");
+  if (!src_in.data || src_in.row_stride < src_in.row_length())
+    throw std::invalid_argument("resample: the source's rows are shorter than its width");
   if (dst.width < 1 || dst.height < 1) throw std::invalid_argument("resample: the output size is zero");
   if (dst.channels != src_in.channels)
     throw std::invalid_argument("resample: the output must have the source's channel count");
-  if (src_in.pixels.size() != static_cast<size_t>(src_in.height) * src_in.row_stride() ||
-      dst.pixels.size() != static_cast<size_t>(dst.height) * dst.row_stride())
+  if (dst.pixels.size() != static_cast<size_t>(dst.height) * dst.row_stride())
     throw std::invalid_argument("resample: pixel buffer size does not match the image size");
   const int threads = resolve_threads(opt.threads);
   Image coefficients;
-  const Image* src = &src_in;
-  if (opt.interpolating) {
-    coefficients = src_in;
+  ImageView src = src_in;
+  if (opt.interpolating) {  // the prefilter works in place, on a packed copy
+    coefficients = Image(src_in.width, src_in.height, src_in.channels);
+    for (int j = 0; j < src_in.height; ++j)
+      std::memcpy(coefficients.row(j), src_in.row(j), src_in.row_length() * sizeof(float));
     prefilter(coefficients, k, opt.edge, threads);
-    src = &coefficients;
+    src = coefficients.view();
   }
-  Plan p{*src, dst, axis_weights(k, src->width, dst.width), axis_weights(k, src->height, dst.height), opt.edge, src->channels,
+  Plan p{src, dst, axis_weights(k, src.width, dst.width), axis_weights(k, src.height, dst.height), opt.edge, src.channels,
          kStreamingStores && dst.pixels.size() * sizeof(float) > (size_t(32) << 20), {}};
   p.split = split_row(p.ax, p.C);
   // Multiply-adds, in units of a 4-wide horizontal tap (see the top of this file).
   const double C = p.C, hx = p.ax.taps * (C <= 4 ? 1.0 : C / 4), vy = p.ay.taps * C / 8;
-  const double used_rows = std::min<double>(src->height, double(p.ay.hi - p.ay.lo + 1));
+  const double used_rows = std::min<double>(src.height, double(p.ay.hi - p.ay.lo + 1));
   const double h_first = used_rows * dst.width * hx + double(dst.height) * dst.width * vy;
-  const double v_first = double(dst.height) * src->width * vy + double(dst.height) * dst.width * hx;
+  const double v_first = double(dst.height) * src.width * vy + double(dst.height) * dst.width * hx;
   if (h_first <= v_first)
     horizontal_first(p, threads);
   else
     vertical_first(p, threads);
+}
+
+void resample_into(const Image& src, Image& dst, const Kernel& k, const ResampleOptions& opt) {
+  if (src.pixels.size() != static_cast<size_t>(src.height) * src.row_stride())
+    throw std::invalid_argument("resample: pixel buffer size does not match the image size");
+  resample_into(src.view(), dst, k, opt);
 }
 
 Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt) {

@@ -3,6 +3,7 @@
 # must draw exactly the moved prefix's one spec, so it found share/splinefig/specs next to its
 # own bin/ and neither the source tree (33 specs) nor the original prefix.
 include(${CMAKE_CURRENT_LIST_DIR}/install_prefix.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/image_module.cmake)
 # Moved out of the build tree too: a program of the build tree may use the source tree's specs.
 string(RANDOM LENGTH 8 tag)
 set(MOVED ${TMP_DIR}/splinefig-relocated-${tag})
@@ -19,12 +20,15 @@ foreach(spec ${installed})
     file(REMOVE ${specs}/${spec})
   endif()
 endforeach()
-execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=SPLINEFIG_SPECS_DIR
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=SPLINEFIG_SPECS_DIR LD_DEBUG=files
     ${MOVED}/bin/splinefig figures --out ${WORK_DIR}/out
   WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(rc)
   message(FATAL_ERROR "the moved splinefig figures failed: ${rc}\n${out}${err}")
 endif()
+# It wrote its PNG through the moved install's image I/O module, found next to its own bin/.
+expect_image_module_from("${err}" ${MOVED}/${LIBDIR}/splinefig)
+string(REGEX REPLACE "[^\n]*[0-9]+:\t[^\n]*\n" "" err "${err}")  # the loader's lines
 file(GLOB drawn RELATIVE ${WORK_DIR}/out ${WORK_DIR}/out/*.png)
 if(NOT drawn STREQUAL "cbasis.png")
   file(REMOVE_RECURSE ${MOVED})

@@ -11,6 +11,8 @@
 // The renderer's images are linear RGBA (4 channels, alpha 3). read_image() (io.hpp) gives
 // either the file's values as stored or the decoded linear form; write_image() converts from
 // whichever encoding the image is in.
+#include <splinefig/image/image_view.hpp>
+
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -78,6 +80,8 @@ struct Image {
     if (i < 0 || j < 0 || i >= width || j >= height || c < 0 || c >= channels) return 0.0f;
     return at(i, j, c);
   }
+  // The pixels, read-only, as a view (valid while the image lives and keeps its size).
+  ImageView view() const { return {pixels.data(), width, height, channels, row_stride()}; }
   // Names, alpha channel, encoding and origin of `other`, for an image derived from it.
   void copy_metadata_from(const Image& other);
 };

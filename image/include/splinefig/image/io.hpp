@@ -63,6 +63,11 @@ struct WriteOptions {
 // Throws UnwritableImage (naming the path) for any other extension or any failure.
 void write_image(const std::string& path, const Image& im, const WriteOptions& options = {});
 
+// Loads the image I/O module (OpenImageIO, see docs/image.md) now rather than at the first read
+// or write, e.g. on a thread that would otherwise wait while others render. Never throws: a
+// module that cannot be loaded is reported by the first read or write.
+void preload_image_io() noexcept;
+
 // Throws UnreadableImage unless `path` is a structurally complete PNG (exposed for tests).
 void check_png_structure(const std::string& path);
 

@@ -55,6 +55,9 @@ struct ResampleOptions {
 // Resamples `src` into `dst`, whose width and height give the new size; dst.channels must
 // equal src.channels and dst.pixels must be allocated. Throws std::invalid_argument for bad
 // arguments (empty images, channel mismatch, a filter without a stable prefilter inverse).
+// The view form reads pixels held elsewhere in place (any row stride); the Image form is the
+// same computation on the image's view, so both give the same bits.
+void resample_into(const ImageView& src, Image& dst, const Kernel& k, const ResampleOptions& opt = {});
 void resample_into(const Image& src, Image& dst, const Kernel& k, const ResampleOptions& opt = {});
 Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt = {});
 

@@ -1,0 +1,111 @@
+// Finding and opening the image codec module (see codec.hpp).
+//
+// Candidates, first found wins:
+//   1. $SPLINEFIG_IMAGE_MODULE, when set (then the only candidate);
+//   2. near the object holding this code (a shared library or Python extension it was linked
+//      into) and near the running program (/proc/self/exe): <A>/<libdir>/splinefig/ for the
+//      directories A above it (add_near) -- so an installed tree works wherever it is moved;
+//   3. the bare file name, which the dynamic loader looks up in the program's RUNPATH (set by
+//      the package config for programs linking splinefig::image) and LD_LIBRARY_PATH;
+//   4. this build tree's module;
+//   5. the configured install libdir.
+#include "codec.hpp"
+
+#include <splinefig/image/io.hpp>
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+#ifndef SPLINEFIG_IMAGE_MODULE_NAME
+#error "SPLINEFIG_IMAGE_MODULE_NAME must name the module file"
+#endif
+
+namespace splinefig::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+// <A>/<libdir>/splinefig/<module> for the directories A above `object`, nearest first, up to
+// five levels and never the root: a program in <prefix>/bin, a library in <prefix>/<libdir>
+// and a Python extension in <prefix>/lib/python3.X/dist-packages/splinefig all find
+// <prefix>/<libdir>/splinefig.
+void add_near(std::vector<std::string>& out, const fs::path& object) {
+  std::error_code ec;
+  fs::path dir = fs::weakly_canonical(object, ec).parent_path();
+  if (ec) return;
+  for (int level = 0; level < 5 && !dir.empty() && dir != dir.root_path(); ++level, dir = dir.parent_path())
+    out.push_back((dir / SPLINEFIG_LIBDIR / "splinefig" / SPLINEFIG_IMAGE_MODULE_NAME).string());
+}
+
+std::vector<std::string> candidates() {
+  std::vector<std::string> out;
+  // For the program itself dladdr gives argv[0], which may be relative or a bare name found
+  // in PATH: only an absolute name (a shared object's) is used; /proc/self/exe names the program.
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&image_codec), &info) != 0 && info.dli_fname && info.dli_fname[0] == '/')
+    add_near(out, info.dli_fname);
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) add_near(out, exe);
+  out.push_back(SPLINEFIG_IMAGE_MODULE_NAME);
+  out.push_back(SPLINEFIG_IMAGE_MODULE_BUILD_PATH);
+  out.push_back(SPLINEFIG_IMAGE_MODULE_INSTALL_PATH);
+  return out;
+}
+
+const ImageCodec* load() {
+  std::vector<std::string> tried;
+  if (const char* env = std::getenv("SPLINEFIG_IMAGE_MODULE"); env && *env)
+    tried.push_back(env);
+  else
+    tried = candidates();
+  std::string failures;
+  for (const std::string& path : tried) {
+    // A path with a '/' that does not exist is skipped quietly; the bare name is the loader's.
+    std::error_code ec;
+    if (path.find('/') != std::string::npos && !fs::exists(path, ec)) {
+      failures += (failures.empty() ? "" : ", ") + path;
+      continue;
+    }
+    void* handle = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
+    if (!handle) {
+      const char* why = dlerror();
+      if (path.find('/') == std::string::npos && (!why || std::string(why).rfind(path + ":", 0) == 0)) {
+        failures += (failures.empty() ? "" : ", ") + path + " (loader path)";
+        continue;
+      }
+      throw std::runtime_error("cannot load the image I/O module " + path + ": " + (why ? why : "dlopen failed"));
+    }
+    auto entry = reinterpret_cast<ImageCodecEntry>(dlsym(handle, SPLINEFIG_IMAGE_CODEC_SYMBOL));
+    const ImageCodec* codec = entry ? entry() : nullptr;
+    if (!codec || codec->abi != image_codec_abi)
+      throw std::runtime_error("the image I/O module " + path + " is not this version of splinefig's");
+    return codec;  // never closed: OpenImageIO keeps threads and caches for the process
+  }
+  throw std::runtime_error("cannot find the image I/O module " SPLINEFIG_IMAGE_MODULE_NAME " (looked for " + failures +
+                           "; set SPLINEFIG_IMAGE_MODULE to its path)");
+}
+
+}  // namespace
+
+const ImageCodec& image_codec() {
+  static const ImageCodec* const codec = load();  // a failed load throws and is tried again next time
+  return *codec;
+}
+
+}  // namespace splinefig::detail
+
+namespace splinefig {
+
+void preload_image_io() noexcept {
+  try {
+    detail::image_codec();
+  } catch (...) {  // the first read or write reports it
+  }
+}
+
+}  // namespace splinefig

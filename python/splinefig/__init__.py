@@ -1,0 +1,653 @@
+"""splinefig from Python: exact spline kernels, curve evaluation, exact-area rendering,
+resampling and idiff-compatible image comparison, with numpy arrays in and out.
+
+The C++ library does the work (``splinefig._core``); this layer checks arguments (a wrong
+dtype, shape or value raises ``TypeError`` or ``ValueError`` naming the argument), converts
+them without copying where the layout allows, and documents the functions. Images are numpy
+arrays of shape (h, w) or (h, w, c), float32, rows top to bottom; the renderer's are (h, w, 4)
+RGBA in linear light with associated alpha. See docs/python.md.
+"""
+from __future__ import annotations
+
+import math
+import os
+import threading
+from typing import Any, Optional, Sequence, Union
+
+import numpy as np
+
+from . import _core, _paths
+
+__version__ = _core.version
+
+__all__ = [
+    "Basis", "Kernel", "kernel", "kernel_derivative", "response", "fourier", "report",
+    "evaluate", "sample_count", "arclength_points", "arclength", "interpolate",
+    "Scene", "render_spec", "render_figure", "figure_names", "specs_dir",
+    "resample", "image_buffer", "compare", "difference_image", "triptych", "read_image", "write_image",
+]
+
+Kernel = _core.Kernel
+_PathLike = Union[str, "os.PathLike[str]"]
+
+
+# ---- argument checks -------------------------------------------------------------------------
+
+def _real(value: Any, name: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name}: expected a real number, got {type(value).__name__}")
+    v = float(value)
+    if not math.isfinite(v):
+        raise ValueError(f"{name}: {v} is not finite")
+    return v
+
+
+def _int(value: Any, name: str, lo: Optional[int] = None, hi: Optional[int] = None) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name}: expected an integer, got {type(value).__name__}")
+    v = int(value)
+    if (lo is not None and v < lo) or (hi is not None and v > hi):
+        bounds = f">= {lo}" if hi is None else f"in [{lo}, {hi}]"
+        raise ValueError(f"{name}: {v} is not {bounds}")
+    return v
+
+
+def _str(value: Any, name: str) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"{name}: expected a string, got {type(value).__name__}")
+    return value
+
+
+def _choice(value: Any, name: str, known: Sequence[str]) -> str:
+    v = _str(value, name)
+    if v not in known:
+        raise ValueError(f"{name}: unknown value '{v}' (known: {', '.join(known)})")
+    return v
+
+
+def _numeric(value: Any, name: str, dtype: Any) -> np.ndarray:
+    """value as a C-contiguous array of dtype: no copy when it already is one."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name}: expected numbers, got {type(value).__name__}")
+    try:
+        a = np.asarray(value)
+    except Exception as e:  # ragged lists and the like
+        raise ValueError(f"{name}: not an array of numbers ({e})") from None
+    if a.dtype == object or not (np.issubdtype(a.dtype, np.number) or a.dtype == np.bool_) \
+            or np.issubdtype(a.dtype, np.complexfloating):
+        raise TypeError(f"{name}: expected real numbers, got an array of {a.dtype}")
+    return np.asarray(a, dtype=dtype, order="C")
+
+
+def _points(value: Any, name: str, min_dim: int = 1) -> np.ndarray:
+    a = _numeric(value, name, np.float64)
+    if a.ndim != 2 or a.shape[1] < min_dim:
+        raise ValueError(f"{name}: expected an (n, d) array of points, got shape {a.shape}")
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name}: contains a value that is not finite")
+    return a
+
+
+def _image(value: Any, name: str) -> np.ndarray:
+    """An (h, w) or (h, w, c) float32/float64 image as C-contiguous float32."""
+    a = np.asarray(value) if not isinstance(value, (str, bytes)) else None
+    if a is None or a.dtype not in (np.float32, np.float64):
+        what = type(value).__name__ if a is None else f"dtype {a.dtype}"
+        raise TypeError(f"{name}: expected a float32 or float64 array, got {what}")
+    if a.ndim not in (2, 3) or a.shape[0] < 1 or a.shape[1] < 1 or (a.ndim == 3 and a.shape[2] < 1):
+        raise ValueError(f"{name}: expected an (h, w) or (h, w, c) image, got shape {a.shape}")
+    return np.ascontiguousarray(a, dtype=np.float32)
+
+
+def _kernel(value: Any, name: str = "basis") -> "Kernel":
+    if isinstance(value, Kernel):
+        return value
+    if isinstance(value, Basis):
+        return _core.basis_kernel(value._b)
+    if isinstance(value, str):
+        try:
+            return _core.parse_kernel(value)
+        except ValueError as e:
+            raise ValueError(f"{name}: {e}") from None
+    raise TypeError(f"{name}: expected a Basis, a Kernel or a spec string, got {type(value).__name__}")
+
+
+def _basis(value: Any, name: str = "basis") -> "Basis":
+    if isinstance(value, Basis):
+        return value
+    if isinstance(value, str):
+        return Basis.parse(value, _name=name)
+    raise TypeError(f"{name}: expected a Basis or a spec string, got {type(value).__name__}")
+
+
+def _color(value: Any, name: str) -> tuple:
+    """'#rrggbb[aa]' (sRGB) or 3 or 4 linear-light floats -> a linear RGBA tuple."""
+    if isinstance(value, str):
+        c = _core.parse_hex_color(value)
+        if c is None:
+            raise ValueError(f"{name}: '{value}' is not #rrggbb or #rrggbbaa")
+        return tuple(c)
+    a = _numeric(value, name, np.float64).ravel()
+    if a.size not in (3, 4):
+        raise ValueError(f"{name}: expected 3 or 4 channel values, got {a.size}")
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name}: contains a value that is not finite")
+    return tuple(float(v) for v in a) + ((1.0,) if a.size == 3 else ())
+
+
+def _library(name: str, f, *args):
+    """Calls f, prefixing the library's message with the argument it concerns."""
+    try:
+        return f(*args)
+    except ValueError as e:
+        raise ValueError(f"{name}: {e}") from None
+
+
+# ---- spline core -----------------------------------------------------------------------------
+
+class Basis:
+    """A uniform polynomial spline basis: its (degree+1) x (degree+1) matrix M, rows ordered
+    u^degree .. u^0 (the memo's U = [u^3 u^2 u 1])."""
+
+    __slots__ = ("_b",)
+
+    def __init__(self, _b: Any) -> None:
+        if not isinstance(_b, _core.Basis):
+            raise TypeError("use Basis.parse(spec) or a constructor such as Basis.cardinal(a)")
+        self._b = _b
+
+    @staticmethod
+    def parse(spec: str, *, _name: str = "spec") -> "Basis":
+        """NAME[:key=value,...], e.g. "beta:b1=2,b2=0" (docs/spline.md)."""
+        return Basis(_library(_name, _core.parse_basis, _str(spec, _name)))
+
+    @staticmethod
+    def known() -> list:
+        return [n.strip() for n in _core.known_bases().split(",")]
+
+    @staticmethod
+    def catmull_rom() -> "Basis":
+        return Basis(_core.catmull_rom())
+
+    @staticmethod
+    def cardinal(a: float) -> "Basis":
+        return Basis(_library("a", _core.cardinal, _real(a, "a")))
+
+    @staticmethod
+    def bspline() -> "Basis":
+        return Basis(_core.bspline())
+
+    @staticmethod
+    def tensioned_bspline(a: float) -> "Basis":
+        return Basis(_library("a", _core.tensioned_bspline, _real(a, "a")))
+
+    @staticmethod
+    def beta(b1: float, b2: float) -> "Basis":
+        return Basis(_library("b1, b2", _core.beta, _real(b1, "b1"), _real(b2, "b2")))
+
+    @staticmethod
+    def uniform_bspline(degree: int) -> "Basis":
+        return Basis(_library("degree", _core.uniform_bspline, _int(degree, "degree", 1, 64)))
+
+    @staticmethod
+    def mitchell_netravali(b: float = 1 / 3, c: float = 1 / 3) -> "Basis":
+        return Basis(_library("b, c", _core.mitchell_netravali, _real(b, "b"), _real(c, "c")))
+
+    @property
+    def family(self) -> str:
+        return self._b.family
+
+    @property
+    def spec(self) -> str:
+        return self._b.spec
+
+    @property
+    def degree(self) -> int:
+        return self._b.degree
+
+    @property
+    def matrix(self) -> np.ndarray:
+        """A new (degree+1, degree+1) float64 array."""
+        return self._b.matrix
+
+    @property
+    def support(self) -> tuple:
+        return self._b.support
+
+    def kernel(self) -> "Kernel":
+        """The basis function as a Kernel object (make it once for many calls)."""
+        return _core.basis_kernel(self._b)
+
+    def __eq__(self, other: object) -> bool:
+        """The same matrix (so the same curves), whatever the spec says."""
+        return isinstance(other, Basis) and self._b == other._b
+
+    def __hash__(self) -> int:
+        return hash(self.matrix.tobytes())
+
+    def __repr__(self) -> str:
+        return f"Basis.parse('{self.spec}')"
+
+
+def _out(out: Any, shape: tuple) -> np.ndarray:
+    if not isinstance(out, np.ndarray) or out.dtype != np.float64 or not out.flags.c_contiguous \
+            or not out.flags.writeable:
+        raise TypeError("out: expected a writeable C-contiguous float64 array")
+    if out.shape != shape:
+        raise ValueError(f"out: shape {out.shape}, expected {shape}")
+    return out
+
+
+def kernel(basis: Any, x: Any, *, out: Optional[np.ndarray] = None) -> np.ndarray:
+    """k(x) of a basis (or a filter spec: box, tent, lanczos3) for every element of x, any shape;
+    a float64 array of x's shape (written into `out` when given)."""
+    k = _kernel(basis)
+    xa = _numeric(x, "x", np.float64)
+    if out is None:
+        return _core.kernel_values(k, xa)
+    _core.kernel_values_into(k, xa, _out(out, xa.shape))
+    return out
+
+
+def kernel_derivative(basis: Any, x: Any, order: int = 1) -> np.ndarray:
+    """The order-th derivative of k at every element of x (the piece to the right at a knot)."""
+    k = _kernel(basis)
+    return _library("basis", _core.kernel_derivative, k, _numeric(x, "x", np.float64), _int(order, "order", 0))
+
+
+def response(basis: Any, freqs: Any) -> np.ndarray:
+    """|K(f)|, f in cycles per sample, for every element of freqs."""
+    return _core.response(_kernel(basis), _numeric(freqs, "freqs", np.float64))
+
+
+def fourier(basis: Any, freqs: Any) -> np.ndarray:
+    """K(f) = integral k(s) exp(-2 pi i f s) ds as complex128, for every element of freqs."""
+    return _core.fourier(_kernel(basis), _numeric(freqs, "freqs", np.float64))
+
+
+def report(basis: Any) -> dict:
+    """The filter analysis as a dict (the keys of `splinefig kernel --report`; "text" holds
+    its lines)."""
+    return _core.report(_kernel(basis))
+
+
+_ENDS = ("open", "double", "doubled", "closed")
+
+
+def evaluate(knots: Any, basis: Any, *, grain: int = 16, ends: str = "open", derivative: int = 0,
+             out: Optional[np.ndarray] = None) -> np.ndarray:
+    """The curve through (or near) an (n, d) array of knots, `grain` points per piece plus the
+    end point: an (m, d) float64 array, as `splinefig eval` prints it (written into `out`
+    when given; sample_count() gives m)."""
+    k = _points(knots, "knots")
+    b = _basis(basis)
+    g = _int(grain, "grain", 1, 1 << 24)
+    e = _choice(ends, "ends", _ENDS)
+    d = _int(derivative, "derivative", 0, 2)
+    if out is None:
+        return _library("knots", _core.evaluate, k, b._b, g, e, d)
+    _out(out, (sample_count(k, b, grain=g, ends=e), k.shape[1]))
+    _library("knots", _core.evaluate_into, k, b._b, g, e, d, out)
+    return out
+
+
+def sample_count(knots: Any, basis: Any, *, grain: int = 16, ends: str = "open") -> int:
+    """The number of points evaluate() gives: segments * grain + 1."""
+    return _library("knots", _core.sample_count, _points(knots, "knots"), _basis(basis)._b,
+                    _int(grain, "grain", 1, 1 << 24), _choice(ends, "ends", _ENDS))
+
+
+def arclength_points(knots: Any, basis: Any, *, count: int, ends: str = "open", method: str = "accurate",
+                     grain: int = 16, derivative: int = 0, return_parameters: bool = False):
+    """`count` points evenly spaced in arc length along the curve: a (count, d) array (and the
+    parameters t when return_parameters). method "accurate" (adaptive quadrature) or
+    "polygon" (the memo's chords of the curve sampled at `grain`)."""
+    k = _points(knots, "knots")
+    b = _basis(basis)
+    c = _int(count, "count", 2, 1 << 26)
+    e = _choice(ends, "ends", _ENDS)
+    m = _choice(method, "method", ("accurate", "polygon"))
+    g = _int(grain, "grain", 1, 1 << 24)
+    d = _int(derivative, "derivative", 0, 2)
+    pts, t = _library("knots", _core.arclength_points, k, b._b, c, e, m, g, d)
+    return (pts, t) if return_parameters else pts
+
+
+def arclength(knots: Any, basis: Any, *, ends: str = "open") -> float:
+    """The curve's length (adaptive Gauss-Kronrod, relative tolerance 1e-13)."""
+    return _library("knots", _core.arclength, _points(knots, "knots"), _basis(basis)._b, _choice(ends, "ends", _ENDS))
+
+
+def interpolate(points: Any, *, ends: str = "relaxed", start_velocity: Any = None, end_velocity: Any = None,
+                output: str = "curve", grain: int = 16) -> np.ndarray:
+    """The cubic spline through the (n+1, d) data points (seed 003): output "curve" gives
+    n*grain+1 points, "bspline" the n+1 B-spline control points, "bezier" an (n, 4, d) array
+    of the Bezier pieces. ends: relaxed, clamped (with start_velocity / end_velocity, zero by
+    default) or periodic (the last point repeats the first)."""
+    s = _points(points, "points")
+    e = _choice(ends, "ends", ("relaxed", "clamped", "periodic"))
+    o = _choice(output, "output", ("curve", "bspline", "bezier"))
+    g = _int(grain, "grain", 1, 1000000)
+    dim = s.shape[1]
+    need = 3 if e == "periodic" else 2
+    if s.shape[0] < need:
+        raise ValueError(f"points: {s.shape[0]} given, ends '{e}' needs at least {need}")
+    vel = []
+    for name, v in (("start_velocity", start_velocity), ("end_velocity", end_velocity)):
+        if v is not None and e != "clamped":
+            raise ValueError(f"{name}: applies only to ends 'clamped'")
+        a = np.zeros(dim) if v is None else _numeric(v, name, np.float64).ravel()
+        if a.size != dim or not np.isfinite(a).all():
+            raise ValueError(f"{name}: expected {dim} finite coordinates, got {a.size}")
+        vel.append(a)
+    if e == "periodic" and not np.array_equal(s[0], s[-1]):
+        raise ValueError(f"points: ends 'periodic' needs the last point to repeat the first (point {s.shape[0]} differs)")
+    return _library("points", _core.interpolate, s, e, vel[0], vel[1], o, g)
+
+
+# ---- rendering -------------------------------------------------------------------------------
+
+class Scene:
+    """A drawing of width x height pixels ((0, 0) the top-left corner, y down), rasterized
+    exactly (area coverage, or a spline pixel filter) into linear-light RGBA. Colours are
+    "#rrggbb[aa]" (sRGB) or 3 or 4 linear-light floats with straight alpha."""
+
+    def __init__(self, width: int, height: int, *, background: Any = (1.0, 1.0, 1.0, 1.0), filter: Any = "box") -> None:
+        w = _int(width, "width", 1, 32768)
+        h = _int(height, "height", 1, 32768)
+        if w * h > (1 << 28):
+            raise ValueError(f"width, height: {w}x{h} is more than 2^28 pixels")
+        self._s = _library("filter", _core.Scene, w, h, _color(background, "background"), _kernel(filter, "filter"))
+        # render() runs without the interpreter's lock: adding items meanwhile from another
+        # thread waits for it instead of changing the display list under the rasterizer.
+        self._lock = threading.Lock()
+
+    @property
+    def width(self) -> int:
+        return self._s.width
+
+    @property
+    def height(self) -> int:
+        return self._s.height
+
+    def polyline(self, points: Any, *, color: Any = "#000000", width: float = 1.0, closed: bool = False,
+                 join: str = "miter", cap: str = "butt", miter_limit: float = 4.0,
+                 dashes: Sequence[float] = (), dash_offset: float = 0.0) -> "Scene":
+        p = _points(points, "points", 2)
+        if p.shape[1] != 2:
+            raise ValueError(f"points: expected an (n, 2) array, got shape {p.shape}")
+        wd = _real(width, "width")
+        if wd <= 0:
+            raise ValueError(f"width: {wd} is not positive")
+        ml = _real(miter_limit, "miter_limit")
+        if ml < 1:
+            raise ValueError(f"miter_limit: {ml} is less than 1")
+        ds = [_real(d, "dashes") for d in dashes]
+        if any(d < 0 for d in ds) or (ds and sum(ds) <= 0):
+            raise ValueError("dashes: lengths must be >= 0 with a positive sum")
+        with self._lock:
+            _library("points", self._s.polyline, p, bool(closed), _color(color, "color"), wd, _choice(join, "join", ("miter", "round", "bevel")),
+                     _choice(cap, "cap", ("butt", "round", "square")), ml, ds, _real(dash_offset, "dash_offset"))
+        return self
+
+    def fill(self, contours: Any, *, color: Any = "#000000", rule: str = "nonzero") -> "Scene":
+        """Fills one (n, 2) contour or a list of them."""
+        if isinstance(contours, np.ndarray) and contours.ndim == 2:
+            contours = [contours]
+        elif isinstance(contours, (list, tuple)) and contours and np.ndim(contours[0]) == 1:
+            contours = [contours]
+        cs = []
+        for c in contours:
+            p = _points(c, "contours", 2)
+            if p.shape[1] != 2:
+                raise ValueError(f"contours: expected (n, 2) arrays, got shape {p.shape}")
+            cs.append(p)
+        r, c = _choice(rule, "rule", ("nonzero", "evenodd")), _color(color, "color")
+        with self._lock:
+            _library("contours", self._s.fill, cs, r, c)
+        return self
+
+    def circle(self, centre: Any, radius: float, *, fill: Any = None, stroke: Any = None, width: float = 1.0) -> "Scene":
+        c = _numeric(centre, "centre", np.float64).ravel()
+        if c.size != 2 or not np.isfinite(c).all():
+            raise ValueError("centre: expected 2 finite coordinates")
+        r = _real(radius, "radius")
+        if r <= 0:
+            raise ValueError(f"radius: {r} is not positive")
+        if fill is None and stroke is None:
+            raise ValueError("fill, stroke: give at least one colour")
+        fc = None if fill is None else _color(fill, "fill")
+        sc = None if stroke is None else _color(stroke, "stroke")
+        wd = _real(width, "width")
+        if sc is not None and wd <= 0:
+            raise ValueError(f"width: {wd} is not positive")
+        with self._lock:
+            if fc is not None:
+                self._s.fill_circle(c[0], c[1], r, fc)
+            if sc is not None:
+                self._s.stroke_circle(c[0], c[1], r, sc, wd)
+        return self
+
+    def markers(self, points: Any, *, shape: str = "circle", size: float = 6.0, color: Any = "#000000") -> "Scene":
+        p = _points(points, "points", 2)
+        if p.shape[1] != 2:
+            raise ValueError(f"points: expected an (n, 2) array, got shape {p.shape}")
+        s = _real(size, "size")
+        if s <= 0:
+            raise ValueError(f"size: {s} is not positive")
+        shp, col = _choice(shape, "shape", ("circle", "square", "diamond", "cross", "plus")), _color(color, "color")
+        with self._lock:
+            self._s.markers(p, shp, s, col)
+        return self
+
+    def text(self, text: str, at: Any, *, size: float = 14.0, color: Any = "#000000", halign: str = "left",
+             valign: str = "baseline", font: str = "DejaVuSans") -> "Scene":
+        a = _numeric(at, "at", np.float64).ravel()
+        if a.size != 2 or not np.isfinite(a).all():
+            raise ValueError("at: expected 2 finite coordinates")
+        s = _real(size, "size")
+        if s <= 0:
+            raise ValueError(f"size: {s} is not positive")
+        args = (_str(text, "text"), a[0], a[1], s, _color(color, "color"), _choice(halign, "halign", ("left", "center", "right")),
+                _choice(valign, "valign", ("baseline", "middle", "top", "bottom")), _str(font, "font"))
+        with self._lock:
+            _library("text", self._s.text, *args)
+        return self
+
+    def render(self, *, threads: int = 0) -> np.ndarray:
+        """The picture: an (h, w, 4) float32 array, linear light, associated alpha."""
+        t = _int(threads, "threads", 0, 256)
+        with self._lock:
+            return self._s.render(t)
+
+    def save(self, path: _PathLike, *, threads: int = 0) -> None:
+        """Renders and writes .png (8-bit sRGB) or .exr (float linear)."""
+        write_image(path, self.render(threads=threads))
+
+
+def _path(value: Any, name: str) -> str:
+    if isinstance(value, os.PathLike):
+        value = os.fspath(value)
+    if not isinstance(value, str):
+        raise TypeError(f"{name}: expected a path, got {type(value).__name__}")
+    return value
+
+
+def specs_dir() -> str:
+    """The directory of the built-in figure specs ($SPLINEFIG_SPECS_DIR if set)."""
+    return os.environ.get("SPLINEFIG_SPECS_DIR") or _paths.specs_dir
+
+
+def figure_names() -> list:
+    """The names of the built-in figures."""
+    d = specs_dir()
+    return sorted(f[:-5] for f in os.listdir(d) if f.endswith(".toml")) if os.path.isdir(d) else []
+
+
+def render_spec(spec: Any, *, scale: float = 1.0, threads: int = 0, text: Optional[str] = None) -> np.ndarray:
+    """Renders a TOML figure spec file (docs/spec.md), or the spec given as `text` (then `spec`
+    is its name in messages): an (h, w, 4) float32 array, linear light, as `splinefig render`
+    draws it."""
+    s = _real(scale, "scale")
+    if s <= 0:
+        raise ValueError(f"scale: {s} is not positive")
+    t = _int(threads, "threads", 0, 256)
+    if text is not None:
+        name = _str(spec, "spec") if spec is not None else "<text>"
+        return _core.render_spec_text(_str(text, "text"), name, ".", s, t)
+    return _core.render_spec_file(_path(spec, "spec"), s, t)
+
+
+def render_figure(name: str, *, scale: float = 1.0, threads: int = 0) -> np.ndarray:
+    """A built-in figure by name (e.g. "bias"; figure_names() lists them)."""
+    n = _str(name, "name")
+    path = os.path.join(specs_dir(), n + ".toml")
+    if "/" in n or not os.path.isfile(path):
+        raise ValueError(f"name: no built-in figure '{n}' in {specs_dir()}")
+    return render_spec(path, scale=scale, threads=threads)
+
+
+# ---- images: files, resampling, comparison ---------------------------------------------------
+
+def read_image(path: _PathLike, *, linear: bool = False, return_encoding: bool = False):
+    """An image file as an (h, w, c) float32 array: the values as stored (8-bit v/255, sRGB
+    PNGs stay encoded, as idiff compares them) or, with linear=True, decoded to linear light
+    with associated alpha (as resampling and drawing need)."""
+    a, enc = _core.read_image(_path(path, "path"), bool(linear))
+    return (a, enc) if return_encoding else a
+
+
+def write_image(path: _PathLike, image: Any, *, encoding: str = "linear", bits: int = 8, description: str = "") -> None:
+    """Writes .png (8 or 16 bits, sRGB-encoded, straight alpha) or .exr/.tif (float32 linear)
+    atomically. `encoding` says what the values are: "linear" light or "srgb"-encoded values."""
+    a = _image(image, "image")
+    e = _choice(encoding, "encoding", ("linear", "srgb"))
+    b = _int(bits, "bits")
+    if b not in (8, 16):
+        raise ValueError(f"bits: {b} is not 8 or 16")
+    _core.write_image(_path(path, "path"), a, e == "srgb", b, _str(description, "description"))
+
+
+def image_buffer(height: int, width: int, channels: Optional[int] = None) -> np.ndarray:
+    """A zeroed (height, width, channels) float32 array held by a library image ((height,
+    width) when channels is None), for filling in place."""
+    h = _int(height, "height", 1, 65536)
+    w = _int(width, "width", 1, 65536)
+    c = 1 if channels is None else _int(channels, "channels", 1, 64)
+    if h * w * c > (1 << 30):
+        raise ValueError(f"height, width, channels: {h}x{w}x{c} is over the limit of 2^30 samples")
+    return _core.image_buffer(h, w, c, channels is None)
+
+
+def resample(image: Any, *, size: Any = None, scale: Any = None, filter: Any = "catmull-rom", edge: str = "clamp",
+             interpolating: bool = False, threads: int = 0) -> np.ndarray:
+    """Resizes an (h, w) or (h, w, c) float32/float64 image with a spline basis function (or
+    box, tent, lanczos3) as the reconstruction filter, exactly as `splinefig resample` does:
+    size=(width, height), or scale=s or (sx, sy) with the size rounded. The result has the
+    input's dtype (the arithmetic is the library's, in float32) and number of axes.
+    A C-contiguous float32 array is read in place (it must not change during the call); any
+    other (float64, another layout) is converted to one once."""
+    a = _image(image, "image")
+    dtype = np.asarray(image).dtype
+    h, w = a.shape[0], a.shape[1]
+    if (size is None) == (scale is None):
+        raise ValueError("size, scale: give exactly one")
+    if size is not None:
+        if isinstance(size, (str, bytes)) or np.ndim(size) != 1 or len(size) != 2:
+            raise TypeError("size: expected (width, height)")
+        dw, dh = (_int(v, "size", 1, 65536) for v in size)
+    else:
+        s = [scale, scale] if np.ndim(scale) == 0 else list(scale)
+        if len(s) != 2:
+            raise ValueError("scale: expected s or (sx, sy)")
+        s = [_real(v, "scale") for v in s]
+        if any(v <= 0 for v in s):
+            raise ValueError("scale: must be positive")
+        dims = []
+        for src, f, axis in ((w, s[0], "width"), (h, s[1], "height")):
+            x = f * src  # rounded as std::round does: halves away from zero
+            d = math.floor(x) + (1 if x - math.floor(x) >= 0.5 else 0)
+            if d < 1 or d > 65536:
+                raise ValueError(f"scale: the {axis} of {src} pixels becomes {d} (not in 1..65536)")
+            dims.append(int(d))
+        dw, dh = dims
+    c = a.shape[2] if a.ndim == 3 else 1
+    if dw * dh * c > (1 << 30):
+        raise ValueError(f"size: {dw}x{dh}x{c} is over the limit of 2^30 samples")
+    k = _kernel(filter, "filter")
+    e = _choice(edge, "edge", ("clamp", "mirror", "wrap", "black"))
+    out = _library("filter", _core.resample, a, dw, dh, k, e, bool(interpolating), _int(threads, "threads", 0, 256))
+    return out if dtype == np.float32 else out.astype(dtype)
+
+
+def _comparable(value: Any, name: str, linear: bool):
+    """(float32 array, srgb?, display name) of an array or an image file."""
+    if isinstance(value, (str, os.PathLike)):
+        p = _path(value, name)
+        a, enc = _core.read_image(p, linear)
+        return a, enc == "srgb", p
+    return _image(value, name), False, name
+
+
+_COMPARE_DEFAULTS = dict(fail=1e-6, warn=1e-6, failpercent=0.0, warnpercent=0.0, hardfail=math.inf,
+                         hardwarn=math.inf, allowfailures=0, linear=False, ignore_alpha=False, shift=0,
+                         ssim=None, flip=None, perceptual=False, threads=0)
+
+
+def compare(a: Any, b: Any, *, mask: Any = None, **options: Any) -> dict:
+    """Compares b (actual) with a (expected) as idiff and `splinefig diff` do; a and b are
+    arrays or image files. Options (idiff's defaults): fail, warn, failpercent, warnpercent,
+    hardfail, hardwarn, allowfailures, linear, ignore_alpha, shift, ssim (minimum), flip
+    (maximum mean), perceptual (SSIM and FLIP without thresholds), threads. Returns a dict:
+    verdict ("match", "warning", "failure"), idiff_verdict, mean_error, rms_error, psnr,
+    max_error, max_pixel, max_channel, nwarn, nfail, npels, nvalues, ssim, flip_mean,
+    flip_max, failures, text (idiff's lines) and json (`splinefig diff --json`)."""
+    unknown = set(options) - set(_COMPARE_DEFAULTS)
+    if unknown:
+        raise TypeError(f"compare: unknown option {', '.join(sorted(unknown))}")
+    o = dict(_COMPARE_DEFAULTS, **options)
+    for k in ("fail", "warn", "hardfail", "hardwarn", "failpercent", "warnpercent"):
+        v = o[k]
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
+            raise TypeError(f"{k}: expected a number, got {type(v).__name__}")
+        v = float(v)
+        if math.isnan(v) or v < 0 or (math.isinf(v) and not k.startswith("hard")):
+            raise ValueError(f"{k}: must be a {'' if k.startswith('hard') else 'finite '}number >= 0, got {v}")
+        if k.endswith("percent") and v > 100:
+            raise ValueError(f"{k}: must be a percentage in [0, 100], got {v}")
+        o[k] = v
+    o["allowfailures"] = _int(o["allowfailures"], "allowfailures", 0)
+    o["shift"] = _int(o["shift"], "shift", 0, 64)
+    o["threads"] = _int(o["threads"], "threads", 0, 256)
+    for k in ("linear", "ignore_alpha", "perceptual"):
+        if not isinstance(o[k], (bool, np.bool_)):
+            raise TypeError(f"{k}: expected a bool, got {type(o[k]).__name__}")
+        o[k] = bool(o[k])
+    if o["ssim"] is not None and not -1 <= _real(o["ssim"], "ssim") <= 1:
+        raise ValueError(f"ssim: {o['ssim']} is not in [-1, 1]")
+    if o["flip"] is not None and not 0 <= _real(o["flip"], "flip") <= 1:
+        raise ValueError(f"flip: {o['flip']} is not in [0, 1]")
+    ia, sa, na = _comparable(a, "a", o["linear"])
+    ib, sb, nb = _comparable(b, "b", o["linear"])
+    m = None
+    if mask is not None:
+        m = _comparable(mask, "mask", False)[0]
+    r = _library("mask", _core.compare, ia, sa, ib, sb, o, m, na, nb)
+    r["_scale"] = 1.0 / r["max_error"] if 0 < r["max_error"] < math.inf else 1.0
+    return r
+
+
+def difference_image(a: Any, b: Any, *, scale: float = 1.0) -> np.ndarray:
+    """|a - b| * scale per value (a and b of one shape), as `splinefig diff --diff-image`."""
+    ia, ib = _image(a, "a"), _image(b, "b")
+    if ia.shape != ib.shape:
+        raise ValueError(f"a, b: shapes {ia.shape} and {ib.shape} differ")
+    return _core.difference_image(ia, ib, _real(scale, "scale"))
+
+
+def triptych(expected: Any, actual: Any, *, heat_scale: Optional[float] = None) -> np.ndarray:
+    """expected | actual | heat map of the difference, sRGB-encoded RGB (write it with
+    write_image(..., encoding="srgb")); heat_scale defaults to 1 / the largest difference."""
+    r = compare(expected, actual)
+    hs = r["_scale"] if heat_scale is None else _real(heat_scale, "heat_scale")
+    return _core.triptych(r["_a"], r["_srgb"], r["_b"], r["_srgb"], hs)
