@@ -97,6 +97,9 @@ int run(const DiffArgs& args) {
 
   compare::Comparison c;
   try {
+    const bool perceptual = o.perceptual || o.ssim_min || o.flip_max;
+    const cli::ProgressLine progress("diff", perceptual && static_cast<long long>(a.width) * a.height >= (1LL << 20));
+    progress.say("comparing " + std::to_string(a.width) + "x" + std::to_string(a.height) + " (SSIM, FLIP)");
     c = compare::compare_images(a, b, o, mask.get());
   } catch (const std::invalid_argument& e) {
     throw cli::Failure(std::string("--mask ") + args.mask + ": " + e.what());
@@ -121,28 +124,30 @@ const cli::Registration reg{
     "diff", "Compare two images as idiff does (exit 0 match, 1 warning, 2 failure, 4 unreadable)",
     [](CLI::App& app) {
       auto args = std::make_shared<DiffArgs>();
-      app.add_option("A", args->a, "First (expected) image")->required();
-      app.add_option("B", args->b, "Second (actual) image")->required();
-      app.add_option("--fail", args->o.thresholds.fail, "Failure threshold on a value's absolute difference (default 1e-06)");
-      app.add_option("--failpercent", args->o.thresholds.failpercent, "Percentage of pixels allowed over --fail (default 0)");
-      app.add_option("--hardfail", args->o.thresholds.hardfail, "Fail if any value differs by more than this (default inf)");
-      app.add_option("--warn", args->o.thresholds.warn, "Warning threshold (default 1e-06)");
-      app.add_option("--warnpercent", args->o.thresholds.warnpercent, "Percentage of pixels allowed over --warn (default 0)");
-      app.add_option("--hardwarn", args->o.thresholds.hardwarn, "Warn if any value differs by more than this (default inf)");
-      app.add_option("--allowfailures", args->o.thresholds.allowfailures, "Number of failing pixels that still pass (default 0)");
+      app.add_option("A", args->a, "First (expected) image")->type_name("PATH")->required();
+      app.add_option("B", args->b, "Second (actual) image")->type_name("PATH")->required();
+      app.add_option("--fail", args->o.thresholds.fail, "Failure threshold on a value's absolute difference")->capture_default_str();
+      app.add_option("--failpercent", args->o.thresholds.failpercent, "Percentage of pixels allowed over --fail")->capture_default_str();
+      app.add_option("--hardfail", args->o.thresholds.hardfail, "Fail if any value differs by more than this")->capture_default_str();
+      app.add_option("--warn", args->o.thresholds.warn, "Warning threshold")->capture_default_str();
+      app.add_option("--warnpercent", args->o.thresholds.warnpercent, "Percentage of pixels allowed over --warn")->capture_default_str();
+      app.add_option("--hardwarn", args->o.thresholds.hardwarn, "Warn if any value differs by more than this")->capture_default_str();
+      app.add_option("--allowfailures", args->o.thresholds.allowfailures, "Number of failing pixels that still pass")->capture_default_str();
       app.add_flag("--linear", args->o.linear, "Decode sRGB-encoded images (PNG) to linear light before comparing");
       app.add_flag("--ignore-alpha", args->o.ignore_alpha, "Leave the alpha channel out of the comparison");
-      app.add_option("--mask", args->mask, "Image whose zero pixels are left out of the comparison");
-      app.add_option("--shift", args->o.shift, "Tolerate translations up to N pixels (see docs/compare.md)");
+      app.add_option("--mask", args->mask, "Image whose zero pixels are left out of the comparison")->type_name("PATH");
+      app.add_option("--shift", args->o.shift, "Tolerate translations up to N pixels (see docs/compare.md)")->capture_default_str();
       app.add_option("--ssim", args->o.ssim_min, "Fail if SSIM (of luminance) is below T");
       app.add_option("--flip", args->o.flip_max, "Fail if the mean LDR-FLIP error is above T");
       app.add_flag("--perceptual", args->o.perceptual, "Report SSIM and FLIP without thresholds");
-      app.add_option("--diff-image", args->diff_image, "Write |A-B| * scale to this file");
-      app.add_option("--triptych", args->triptych, "Write expected | actual | heat map to this file");
-      app.add_option("--scale", args->scale, "Scale of the difference image and heat map (heat map default: 1/max error)");
+      app.add_option("--diff-image", args->diff_image, "Write |A-B| * scale to this file")->type_name("PATH");
+      app.add_option("--triptych", args->triptych, "Write expected | actual | heat map to this file")->type_name("PATH");
+      app.add_option("--scale", args->scale, "Scale of the difference image (1 when not given) and heat map (1/max error when not given)");
       app.add_flag("--json", args->json, "Print a JSON report instead of idiff's lines");
       app.add_flag("-v,--verbose", args->verbose, "Print the report even when the images match");
       app.add_flag("-q,--quiet", args->quiet, "Print only FAILURE");
+      app.footer(
+          "Example: splinefig diff expected.png actual.png --linear --fail 0.004 --diff-image diff.png");
       return cli::Runner([args] { return run(*args); });
     }};
 

@@ -1,4 +1,4 @@
-// `splinefig eval`: knots on stdin -> points on the curve on stdout (docs/cli.md).
+// `splinefig eval`: knots (CSV from a file or stdin) -> points on the curve on stdout (docs/cli.md).
 #include "command.hpp"
 #include "csv.hpp"
 
@@ -22,6 +22,8 @@ using splinefig::cli::Failure;
 struct Options {
   std::string basis, grain = "16", ends = "open", derivative = "0", spacing = "parameter", count;
   std::string knot_spacing = "uniform", betas;  // docs/companion.md
+  std::string input, delimiter = "comma";
+  std::string source = "stdin";  // the input's name in errors
 };
 
 // --knot-spacing and --betas (docs/companion.md): the curve's pieces from the spline library's
@@ -74,7 +76,7 @@ std::string piece_knots(const Curve& c, std::size_t p) {
 // Before measuring length: bounds on |X|, |X'| and |X''| of every piece, from its Horner
 // coefficients, whose squares must stay in range (beyond it the length integral and the
 // polygon's chords overflow). Names the piece's knots otherwise.
-void check_measurable(const Curve& c, const std::string& spacing) {
+void check_measurable(const Curve& c, const std::string& spacing, const std::string& source) {
   const int n = c.degree();
   const std::size_t dim = static_cast<std::size_t>(c.dim());
   std::vector<double> a(static_cast<std::size_t>(n + 1) * dim);
@@ -91,7 +93,7 @@ void check_measurable(const Curve& c, const std::string& spacing) {
       sum += bound * bound;
     }
     if (!std::isfinite(sum))
-      throw Failure("stdin: " + piece_knots(c, p) + " are too large for --spacing " + spacing +
+      throw Failure(source + ": " + piece_knots(c, p) + " are too large for --spacing " + spacing +
                     ": the curve's length there overflows the range of a double");
   }
 }
@@ -112,12 +114,12 @@ void check_finite(const Points& out, std::size_t k, const Curve& c, const Option
     t = static_cast<double>(row) / grain;
   }
   const char* what = derivative == 0 ? "the curve" : derivative == 1 ? "its first derivative" : "its second derivative";
-  throw Failure("stdin: " + piece_knots(c, piece) + " with --basis " + o.basis +
+  throw Failure(o.source + ": " + piece_knots(c, piece) + " with --basis " + o.basis +
                 (o.betas.empty() ? "" : " and --betas " + o.betas) + ": " + what +
                 " overflows the range of a double at t = " + cli::format_number(t));
 }
 
-int run(const Options& o) {
+int run(Options o) {
   const Basis b = cli::parse_spec_flag("--basis", o.basis, [](const std::string& s) { return parse_basis(s); });
   const int grain = static_cast<int>(cli::parse_integer(o.grain, "--grain", 1, 1 << 24));
   const int derivative = static_cast<int>(cli::parse_integer(o.derivative, "--derivative", 0, 2));
@@ -140,12 +142,14 @@ int run(const Options& o) {
   if (o.knot_spacing != "uniform" && !o.betas.empty()) throw Failure("--betas cannot be combined with --knot-spacing");
   if (!o.betas.empty() && b.family != "beta") throw Failure("--betas needs --basis beta, not " + b.spec);
 
-  const Points knots = cli::read_points(std::cin, "stdin");
+  const CsvOptions csv = cli::csv_options(o.delimiter);
+  o.source = cli::input_name(o.input);
+  const Points knots = cli::read_input(o.input, csv);
   Curve c;
   try {
     c = make_curve(b, knots, ends);
   } catch (const CurveError& e) {
-    throw Failure(std::string("stdin: ") + e.what());
+    throw Failure(o.source + ": " + e.what());
   }
 
   const long double sampled = static_cast<long double>(c.segments()) * grain + 1;
@@ -153,12 +157,12 @@ int run(const Options& o) {
   std::vector<double> ts;  // the parameters of the rows, where not grain per piece
   if (o.spacing == "arclength") {
     check_size(count, c.dim(), "--count " + o.count);
-    check_measurable(c, o.spacing);
+    check_measurable(c, o.spacing, o.source);
     ts = evenly_spaced_parameters(c, static_cast<std::size_t>(count));
   } else if (o.spacing == "polygon") {
     check_size(count, c.dim(), "--count " + o.count);
     check_size(sampled, c.dim(), "--grain " + o.grain);
-    check_measurable(c, o.spacing);
+    check_measurable(c, o.spacing, o.source);
     ts = polygon_evenly_spaced_parameters(c, grain, static_cast<std::size_t>(count));
   } else {
     check_size(sampled, c.dim(), "--grain " + o.grain);
@@ -173,28 +177,41 @@ int run(const Options& o) {
 }
 
 const splinefig::cli::Registration reg{
-    "eval", "Evaluate a spline through knots read on stdin (CSV), points on stdout", [](CLI::App& app) {
+    "eval", "Evaluate a spline through knots (CSV from a file or stdin), points on stdout", [](CLI::App& app) {
       auto o = std::make_shared<Options>();
+      cli::add_input(app, o->input, o->delimiter, "Knots");
       app.add_option("--basis", o->basis, std::string("Basis spec NAME[:key=value,...]: ") + cli::basis_specs)
+          ->type_name("SPEC")
           ->required();
-      app.add_option("--grain", o->grain, "Points per piece (default 16)");
+      app.add_option("--grain", o->grain, "Points per piece")->type_name("INT")->capture_default_str();
       app.add_option("--ends", o->ends,
                      "open (the memo's: n knots give (n-3)*grain+1 points), double (first and last knot "
-                     "doubled), closed (cyclic: n*grain+1 points, last = first)");
-      app.add_option("--derivative", o->derivative, "0: X(t), 1: dX/dt, 2: d2X/dt2 (default 0)");
+                     "doubled), closed (cyclic: n*grain+1 points, last = first)")
+          ->type_name("NAME")
+          ->capture_default_str();
+      app.add_option("--derivative", o->derivative, "0: X(t), 1: dX/dt, 2: d2X/dt2")
+          ->type_name("INT")
+          ->capture_default_str();
       app.add_option("--spacing", o->spacing,
-                     "parameter (default: grain points per piece), arclength (--count points evenly "
-                     "spaced along the curve), polygon (the same by the memo's polyline method)");
-      app.add_option("--count", o->count, "Number of points for --spacing arclength|polygon (>= 2)");
+                     "parameter (grain points per piece), arclength (--count points evenly "
+                     "spaced along the curve), polygon (the same by the memo's polyline method)")
+          ->type_name("NAME")
+          ->capture_default_str();
+      app.add_option("--count", o->count, "Number of points for --spacing arclength|polygon (>= 2)")->type_name("INT");
       app.add_option("--knot-spacing", o->knot_spacing,
-                     "catmull-rom only: uniform (default), chordal or centripetal knot parameters; "
-                     "--derivative is then d/dtau of the spaced parameter");
+                     "catmull-rom only: uniform, chordal or centripetal knot parameters; "
+                     "--derivative is then d/dtau of the spaced parameter")
+          ->type_name("NAME")
+          ->capture_default_str();
       app.add_option("--betas", o->betas,
                      "beta only: CSV file of b1,b2 per knot (bias, tension), blended along each piece "
-                     "(continuously shaped Beta-spline, G2)");
+                     "(continuously shaped Beta-spline, G2)")
+          ->type_name("PATH");
       app.footer(
-          "Knots: one per line, comma-separated coordinates (any dimension, the same on every line); "
-          "blank lines and lines starting with # are ignored. Output numbers read back to the same double.");
+          "Knots: one per line, coordinates split by --delimiter (any dimension, the same on every line); "
+          "blank lines and lines starting with # are ignored, and so is a first line of names (x,y). "
+          "Output numbers read back to the same double.\n\n"
+          "Example: printf 'x,y\\n0,0\\n1,2\\n3,1\\n4,3\\n' | splinefig eval --basis catmull-rom --grain 4");
       return splinefig::cli::Runner([o] { return run(*o); });
     }};
 

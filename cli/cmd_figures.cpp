@@ -161,14 +161,16 @@ int run(const FiguresArgs& a) {
 const splinefig::cli::Registration reg{
     "figures", "Regenerate the built-in figures, index.json and the gallery index.html", [](CLI::App& app) {
       auto a = std::make_shared<FiguresArgs>();
-      app.add_option("--out", a->out, "Output directory (default out/figures)");
-      app.add_option("--only", a->only, "Only these figures (names as in figures/specs; repeat or comma-separate)")
+      app.add_option("--out", a->out, "Output directory")->type_name("PATH")->capture_default_str();
+      app.add_option("--only", a->only, "Only these figures (names as in figures/specs; repeat or comma-separate)")->type_name("NAME")
           ->delimiter(',');
-      app.add_option("--format", a->format, "Comma-separated: png, exr, svg, pdf (default png)");
-      app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1; 2 for print)");
-      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the files (PNG pHYs, EXR, PDF page and SVG size)");
-      app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
-      app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones");
+      app.add_option("--format", a->format, "Comma-separated: png, exr, svg, pdf")->type_name("NAME,...")->capture_default_str();
+      app.add_option("--scale", a->scale, "Output pixels per spec pixel (2 for print)")->capture_default_str();
+      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the files (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
+          ->type_name("FLOAT")->capture_default_str();
+      app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
+      app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones")->type_name("PATH");
+      app.footer("Example: splinefig figures --out out/figures --only bias,arclength --scale 2 --format png,svg");
       return splinefig::cli::Runner([a] { return run(*a); });
     }};
 

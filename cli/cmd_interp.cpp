@@ -1,5 +1,5 @@
 // splinefig interp: the cubic spline through data points S_0..S_n (seed 003 §5, §9).
-// Reads the data on stdin; writes the curve, its B-spline control points or its Bezier pieces.
+// Reads the data (a file or stdin); writes the curve, its B-spline control points or its Bezier pieces.
 #include "command.hpp"
 #include "csv.hpp"
 
@@ -25,6 +25,7 @@ struct Options {
   std::string start_velocity, end_velocity;
   std::string grain = "16";
   std::string output = "curve";
+  std::string input, delimiter = "comma";
 };
 
 std::vector<double> velocity(const std::string& text, const char* flag, int dim) {
@@ -36,25 +37,10 @@ std::vector<double> velocity(const std::string& text, const char* flag, int dim)
   return v;
 }
 
-// All of stdin in large reads: std::cin synchronized with stdio reads a character at a time,
-// which dominates the command's time for a million points.
-std::istringstream slurp_stdin() {
-  std::string text;
-  char buf[1 << 16];
-  std::size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
-    // Not text (/dev/zero, a binary file): stop at once, before reading it all.
-    if (std::memchr(buf, 0, got)) throw Failure("stdin: a NUL byte: the input is not text");
-    text.append(buf, got);
-  }
-  if (std::ferror(stdin)) throw Failure("cannot read stdin");
-  return std::istringstream(std::move(text));
-}
-
 // The spline is linear in its data, so a result that is not finite (from finite data) means
 // the 1-4-1 solve or the curve overflowed: name the data point (or end velocity) of largest
 // magnitude, the one that drives it out of range.
-void check_finite(bool finite, const Points& data, const std::vector<double>& v, const std::vector<double>& w) {
+void check_finite(bool finite, const std::string& source, const Points& data, const std::vector<double>& v, const std::vector<double>& w) {
   if (finite) return;
   std::size_t at = 0;
   double big = -1;
@@ -64,7 +50,7 @@ void check_finite(bool finite, const Points& data, const std::vector<double>& v,
   for (const auto& [vel, flag] : {std::pair{&v, "--start-velocity"}, std::pair{&w, "--end-velocity"}})
     for (const double x : *vel)
       if (std::abs(x) > big) big = std::abs(x), what = flag;
-  throw Failure("stdin: the spline overflows the range of a double: " + what + " (a coordinate " + format_number(big) +
+  throw Failure(source + ": the spline overflows the range of a double: " + what + " (a coordinate " + format_number(big) +
                 ") is too large to interpolate");
 }
 
@@ -79,11 +65,12 @@ int run(const Options& o) {
   }
   const int grain = static_cast<int>(parse_integer(o.grain, "--grain", 1, 1000000));
 
-  std::istringstream in = slurp_stdin();
-  const Points data = read_points(in, "stdin");
+  const CsvOptions csv = csv_options(o.delimiter);
+  const std::string source = input_name(o.input);
+  const Points data = read_input(o.input, csv);
   const std::size_t need = o.ends == "periodic" ? 3 : 2;
   if (data.size() < need)
-    throw Failure("stdin: " + std::to_string(data.size()) + (data.size() == 1 ? " data point" : " data points") +
+    throw Failure(source + ": " + std::to_string(data.size()) + (data.size() == 1 ? " data point" : " data points") +
                   ", --ends " + o.ends + " needs at least " + std::to_string(need));
   Interpolant s;
   std::vector<double> v, w;  // clamped end velocities
@@ -97,7 +84,7 @@ int run(const Options& o) {
     const std::size_t n = data.size() - 1;
     for (int c = 0; c < data.dim; ++c)
       if (data[0][static_cast<std::size_t>(c)] != data[n][static_cast<std::size_t>(c)])
-        throw Failure("stdin: --ends periodic needs the last data point to repeat the first (point " +
+        throw Failure(source + ": --ends periodic needs the last data point to repeat the first (point " +
                       std::to_string(n + 1) + " differs from point 1)");
     s = interpolate_periodic(data);
   }
@@ -106,10 +93,10 @@ int run(const Options& o) {
   if (o.output == "bspline") {
     std::size_t non_finite = 0;
     out = format_points(s.control, non_finite);
-    check_finite(non_finite == s.control.coords.size(), data, v, w);
+    check_finite(non_finite == s.control.coords.size(), source, data, v, w);
   } else if (o.output == "bezier") {
     const BezierSpline b = bezier_pieces(s);
-    check_finite(first_non_finite(b.points.coords) == b.points.coords.size(), data, v, w);
+    check_finite(first_non_finite(b.points.coords) == b.points.coords.size(), source, data, v, w);
     const std::size_t dim = static_cast<std::size_t>(b.points.dim);
     out.reserve(b.pieces() * 4 * dim * 24);
     for (std::size_t i = 0; i < b.pieces(); ++i) {
@@ -125,7 +112,7 @@ int run(const Options& o) {
     const Points curve = sample(s, grain);
     std::size_t non_finite = 0;
     out = format_points(curve, non_finite);
-    check_finite(non_finite == curve.coords.size(), data, v, w);
+    check_finite(non_finite == curve.coords.size(), source, data, v, w);
   }
   write_stdout(out);
   return 0;
@@ -133,18 +120,24 @@ int run(const Options& o) {
 
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
+  add_input(app, o->input, o->delimiter, "Data points S_0..S_n");
   app.add_option("--ends", o->ends, "relaxed (P''=0 at the ends), clamped (given end velocities) or periodic")
+      ->type_name("NAME")
       ->capture_default_str();
-  app.add_option("--start-velocity", o->start_velocity, "clamped: P'(0) as comma-separated coordinates (default 0)");
-  app.add_option("--end-velocity", o->end_velocity, "clamped: P'(n) as comma-separated coordinates (default 0)");
-  app.add_option("--grain", o->grain, "points per piece for --output curve (>= 1)")->capture_default_str();
+  app.add_option("--start-velocity", o->start_velocity, "clamped: P'(0) as comma-separated coordinates (0 when not given)")
+      ->type_name("FLOAT,...");
+  app.add_option("--end-velocity", o->end_velocity, "clamped: P'(n) as comma-separated coordinates (0 when not given)")
+      ->type_name("FLOAT,...");
+  app.add_option("--grain", o->grain, "points per piece for --output curve (>= 1)")->type_name("INT")->capture_default_str();
   app.add_option("--output", o->output,
                  "curve (P(t) at t = 0, 1/grain, ..., n), bspline (B_0..B_n) or bezier (4 points per piece per line)")
+      ->type_name("NAME")
       ->capture_default_str();
   app.footer(
-      "Reads data points S_0..S_n on stdin (one per line, comma-separated, any dimension) and fits the "
+      "Reads data points S_0..S_n (one per line, any dimension; see --delimiter) and fits the "
       "cubic spline P(t), t in [0, n], with P(i) = S_i through the B-spline 1-4-1 system. relaxed and "
-      "clamped need at least 2 points, periodic at least 3 with the last equal to the first.");
+      "clamped need at least 2 points, periodic at least 3 with the last equal to the first.\n\n"
+      "Example: printf '0,0\\n1,2\\n3,1\\n' | splinefig interp --output bezier");
   return [o] { return run(*o); };
 }
 

@@ -19,6 +19,8 @@ struct Options {
   std::string basis, from = "-2", to = "2", step = "0.015625";
   bool response = false, report = false;  // filter analysis (kernel/analysis.hpp)
   bool range_given = false;               // --from/--to/--step given: they apply to f too
+  std::string input, delimiter = "comma";  // x (or f) values to evaluate at, instead of a range
+  bool input_given = false;
 };
 
 constexpr double max_rows = 1e8;
@@ -70,6 +72,26 @@ Kernel parse(const Options& o) {
   return cli::parse_spec_flag("--basis", o.basis, [](const std::string& s) { return parse_kernel(s); });
 }
 
+// x,f(x) lines for the values of the input file (one per line); `what` as for write_rows.
+template <class F>
+int write_input_rows(const Options& o, const char* what, F&& f) {
+  if (o.range_given) throw Failure("--from, --to and --step cannot be combined with an input file of values");
+  const Points xs = cli::read_input(o.input, cli::csv_options(o.delimiter));
+  if (xs.dim > 1)
+    throw Failure(cli::input_name(o.input) + ": " + std::to_string(xs.dim) + " values per line, expected one (x)");
+  std::string text;
+  text.reserve(xs.size() * 24);
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const double x = xs[i][0];
+    cli::append_number(text, x);
+    text += ',';
+    cli::append_number(text, finite(f(x), o.basis, what, x));
+    text += '\n';
+  }
+  cli::write_stdout(text);
+  return 0;
+}
+
 // --report: the filter's numbers; --response: f,|K(f)| lines (f in cycles per sample, by default
 // 0 to 2 in steps of 1/256). Any basis spec or box, tent, lanczos3.
 int run_filter(const Options& o) {
@@ -80,6 +102,7 @@ int run_filter(const Options& o) {
     cli::write_stdout(report_text(r));
     return 0;
   }
+  if (o.input_given) return write_input_rows(o, "|K(f)| at f = ", [&](double fr) { return response(f, fr); });
   const double f0 = o.range_given ? cli::parse_number(o.from, "--from") : 0.0;
   const double f1 = o.range_given ? cli::parse_number(o.to, "--to") : 2.0;
   const double step = o.range_given ? cli::parse_number(o.step, "--step") : 1.0 / 256;
@@ -89,6 +112,7 @@ int run_filter(const Options& o) {
 int run(const Options& o) {
   if (o.response || o.report) return run_filter(o);
   const Kernel k = parse(o);
+  if (o.input_given) return write_input_rows(o, "k(x) at x = ", [&](double x) { return k(x); });
   const double x0 = cli::parse_number(o.from, "--from");
   const double x1 = cli::parse_number(o.to, "--to");
   const double step = cli::parse_number(o.step, "--step");
@@ -98,21 +122,34 @@ int run(const Options& o) {
 const splinefig::cli::Registration reg{
     "kernel", "Write a kernel k(x) (a basis function, box, tent, lanczos3) as x,k(x) lines", [](CLI::App& app) {
       auto o = std::make_shared<Options>();
+      app.add_option("INPUT", o->input,
+                     "Values to evaluate at instead of --from/--to/--step: a CSV file of one x (or f) "
+                     "per line, or - for stdin; a first line of names is skipped")
+          ->type_name("PATH");
+      app.add_option("--delimiter", o->delimiter, "Input delimiter: comma, semicolon, tab or space")
+          ->type_name("NAME")
+          ->capture_default_str();
       app.add_option("--basis", o->basis,
                      "Basis spec NAME[:key=value,...] (see splinefig eval --help), or box, tent, lanczos3")
+          ->type_name("SPEC")
           ->required();
-      app.add_option("--from", o->from, "First x (default -2)");
-      app.add_option("--to", o->to, "Last x (default 2)");
-      app.add_option("--step", o->step, "Step in x (default 1/64)");
+      app.add_option("--from", o->from, "First x (or f with --response, default 0)")->type_name("FLOAT")->capture_default_str();
+      app.add_option("--to", o->to, "Last x (or f with --response, default 2)")->type_name("FLOAT")->capture_default_str();
+      app.add_option("--step", o->step, "Step in x (or f with --response, default 1/256)")
+          ->type_name("FLOAT")
+          ->capture_default_str();
       app.add_flag("--response", o->response,
-                   "Write f,|K(f)| lines instead (f in cycles/sample; default 0 to 2 step 1/256, "
-                   "or --from/--to/--step)");
+                   "Write f,|K(f)| lines instead (f in cycles/sample from --from to --to by --step)");
       app.add_flag("--report", o->report,
                    "Print the filter's integral, continuity, droop, leakage, step response and "
                    "Mitchell-Netravali B,C");
-      app.footer("k is the basis function: a curve is X(t) = sum_j x[j] k(t - j) (see docs/conventions.md).");
+      app.footer(
+          "k is the basis function: a curve is X(t) = sum_j x[j] k(t - j) (see docs/conventions.md).\n\n"
+          "Example: splinefig kernel --basis lanczos3 --from -3 --to 3 --step 0.5");
       return splinefig::cli::Runner([o, &app] {
         o->range_given = app.count("--from") + app.count("--to") + app.count("--step") > 0;
+        o->input_given = app.count("INPUT") > 0;
+        if (o->report && o->input_given) throw Failure("--report takes no input file");
         return run(*o);
       });
     }};

@@ -28,13 +28,14 @@ std::string extension_of(const std::string& path) {
 const splinefig::cli::Registration reg{
     "render", "Render one TOML figure spec to a PNG, EXR, SVG or PDF file", [](CLI::App& app) {
       auto a = std::make_shared<RenderArgs>();
-      app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->required();
-      app.add_option("-o,--output", a->out,
-                     "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves)")
-          ->required();
-      app.add_option("--scale", a->scale, "Output pixels per spec pixel (default 1)");
-      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size)");
-      app.add_option("--threads", a->threads, "Rendering threads (default: all cores; at most 256)");
+      app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->type_name("PATH")->required();
+      app.add_option("-o,--output", a->out, "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves)")
+          ->type_name("PATH")->required();
+      app.add_option("--scale", a->scale, "Output pixels per spec pixel")->capture_default_str();
+      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
+          ->type_name("FLOAT")->capture_default_str();
+      app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
+      app.footer("Example: splinefig render figures/specs/bias.toml -o bias.svg --scale 2");
       return splinefig::cli::Runner([a] {
         using splinefig::cli::Failure;
         namespace fig = splinefig::figures;

@@ -6,7 +6,8 @@
 #include <iostream>
 
 namespace {
-const splinefig::cli::Registration reg{"version", "Print the version", [](CLI::App&) {
+const splinefig::cli::Registration reg{"version", "Print the version", [](CLI::App& app) {
+  app.footer("Example: splinefig version");
   return splinefig::cli::Runner([] {
     std::cout << "splinefig " << SPLINEFIG_VERSION << "\n";
     return 0;

@@ -8,12 +8,14 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+#include <unistd.h>
 
 namespace splinefig::cli {
 
@@ -105,5 +107,25 @@ inline double check_dpi(double dpi) {
   if (dpi != 0 && !(dpi >= 1 && dpi <= 10000)) throw Failure("--dpi " + std::to_string(dpi) + ": must be in [1, 10000]");
   return dpi;
 }
+
+// A line on stderr saying what a long command is doing ("splinefig resample: filtering ..."),
+// shown only on a terminal (never when stderr is piped or redirected) and only when `large`;
+// each say() replaces it, and it is erased when the object goes.
+class ProgressLine {
+ public:
+  ProgressLine(const char* command, bool large) : command_(command), on_(large && ::isatty(2)) {}
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+  void say(const std::string& what) const {
+    if (on_) std::fprintf(stderr, "\r\x1b[Ksplinefig %s: %s...", command_, printable(what).c_str()), std::fflush(stderr);
+  }
+  ~ProgressLine() {
+    if (on_) std::fprintf(stderr, "\r\x1b[K"), std::fflush(stderr);
+  }
+
+ private:
+  const char* command_;
+  bool on_;
+};
 
 }  // namespace splinefig::cli

@@ -1,12 +1,16 @@
 // CSV points in and out, and the number parsing every flag shares (see csv.hpp).
 #include "csv.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <cstring>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 namespace splinefig::cli {
 namespace {
@@ -23,53 +27,7 @@ std::string quoted(std::string_view s) {
   return "'" + printable(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
 }
 
-// Parses a finite double or returns why not.
-bool to_double(std::string_view text, double& v, std::string& why) {
-  const std::string_view t = trim(text);
-  if (t.empty()) {
-    why = "is empty";
-    return false;
-  }
-  const char* first = t.data();
-  const char* last = t.data() + t.size();
-  if (*first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, v);
-  if (ec == std::errc::result_out_of_range && ptr == last) {
-    why = quoted(t) + " is out of the range of a double";
-    return false;
-  }
-  if (ec != std::errc() || ptr != last || first == last) {
-    why = quoted(t) + " is not a number";
-    return false;
-  }
-  if (!std::isfinite(v)) {
-    why = quoted(t) + " is not a finite number";
-    return false;
-  }
-  return true;
-}
-
-// The next line of `in` (without its '\n') into `line`; false at the end. Input that is not
-// text ends the read at once: a NUL byte (as from /dev/zero or a binary file), or a line
-// longer than kMaxLine without a newline.
-constexpr std::size_t kMaxLine = std::size_t(1) << 20;
-bool next_line(std::istream& in, std::string& line, std::string_view source, std::size_t lineno) {
-  line.clear();
-  std::streambuf* sb = in.rdbuf();
-  bool any = false;
-  for (;;) {
-    const int c = sb ? sb->sbumpc() : std::char_traits<char>::eof();
-    if (c == std::char_traits<char>::eof()) return any;
-    any = true;
-    if (c == '\n') return true;
-    if (c == 0)
-      throw Failure(std::string(source) + " line " + std::to_string(lineno) + ": a NUL byte: the input is not text");
-    line.push_back(static_cast<char>(c));
-    if (line.size() > kMaxLine)
-      throw Failure(std::string(source) + " line " + std::to_string(lineno) +
-                    ": longer than 1 MiB without a newline: the input is not CSV text");
-  }
-}
+bool to_double(std::string_view text, double& v, std::string& why) { return parse_csv_number(text, v, why); }
 
 }  // namespace
 
@@ -112,39 +70,60 @@ std::vector<double> parse_vector(std::string_view text, std::string_view what) {
   return out;
 }
 
-Points read_points(std::istream& in, std::string_view source) {
-  Points pts;
-  size_t first_line = 0;  // the line that fixed the dimension
-  std::string line;
-  std::vector<double> p;
-  for (size_t lineno = 1; next_line(in, line, source, lineno); ++lineno) {
-    // A UTF-8 byte order mark before the first line (as some editors write) is not data.
-    if (lineno == 1 && line.starts_with("\xef\xbb\xbf")) line.erase(0, 3);
-    const std::string_view l = trim(line);
-    if (l.empty() || l.front() == '#') continue;
-    p.clear();
-    std::string_view rest = l;
-    for (size_t field = 1;; ++field) {
-      const auto comma = rest.find(',');
-      double v = 0;
-      std::string why;
-      if (!to_double(rest.substr(0, comma), v, why))
-        throw Failure(std::string(source) + " line " + std::to_string(lineno) + ", field " +
-                      std::to_string(field) + ": " + (why == "is empty" ? "empty field" : why));
-      p.push_back(v);
-      if (comma == std::string_view::npos) break;
-      rest.remove_prefix(comma + 1);
-    }
-    if (pts.dim == 0) {
-      first_line = lineno;
-    } else if (static_cast<int>(p.size()) != pts.dim) {
-      throw Failure(std::string(source) + " line " + std::to_string(lineno) + ": " + std::to_string(p.size()) +
-                    (p.size() == 1 ? " coordinate" : " coordinates") + ", but line " + std::to_string(first_line) + " has " + std::to_string(pts.dim));
-    }
-    pts.push_back(p);
+Points read_points(std::istream& in, std::string_view source, const CsvOptions& options) {
+  try {
+    Points pts = read_csv_points(in, source, options);
+    if (&in == &std::cin && std::ferror(stdin)) throw Failure("cannot read " + std::string(source));
+    return pts;
+  } catch (const CsvError& e) {
+    throw Failure(e.what());
   }
-  if (in.bad() || (&in == &std::cin && std::ferror(stdin))) throw Failure("cannot read " + std::string(source));
-  return pts;
+}
+
+Points read_input(const std::string& path, const CsvOptions& options) {
+  if (path.empty() || path == "-") {
+    std::istringstream in = slurp_stdin();
+    return read_points(in, "stdin", options);
+  }
+  check_input_file(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Failure(path + ": cannot open it");
+  return read_points(in, path, options);
+}
+
+std::string input_name(const std::string& path) { return path.empty() || path == "-" ? "stdin" : path; }
+
+CsvOptions csv_options(const std::string& delimiter) {
+  const auto d = parse_delimiter(delimiter);
+  if (!d) throw Failure("--delimiter: '" + printable(delimiter) + "' is not one of comma, semicolon, tab, space");
+  return {*d, true};
+}
+
+void add_input(CLI::App& app, std::string& input, std::string& delimiter, const std::string& what) {
+  app.add_option("INPUT", input,
+                 what + ": a CSV file, or - (the default) for stdin; one point per line, a first line of "
+                        "names is skipped if none of it is a number")
+      ->type_name("PATH");
+  app.add_option("--delimiter", delimiter, "Between coordinates: comma, semicolon, tab or space (runs of blanks)")
+      ->type_name("NAME")
+      ->capture_default_str();
+}
+
+std::istringstream slurp_stdin() {
+  std::string text;
+  char buf[1 << 16];
+  std::size_t got;
+  while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
+    // Not text (/dev/zero, a binary file): stop at once, before reading it all.
+    if (const void* nul = std::memchr(buf, 0, got)) {
+      text.append(static_cast<const char*>(buf), static_cast<const char*>(nul));
+      const auto line = std::count(text.begin(), text.end(), '\n') + 1;
+      throw Failure("stdin line " + std::to_string(line) + ": a NUL byte: the input is not text");
+    }
+    text.append(buf, got);
+  }
+  if (std::ferror(stdin)) throw Failure("cannot read stdin");
+  return std::istringstream(std::move(text));
 }
 
 void append_number(std::string& out, double v) {

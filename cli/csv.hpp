@@ -1,7 +1,6 @@
 #pragma once
-// CSV in and out for every subcommand (docs/conventions.md): one point per line, comma-separated
-// coordinates, any dimension >= 1 but the same on every line; blank lines and lines whose
-// first non-blank character is '#' are ignored. Numbers are written as the shortest decimal
+// CSV in and out for every subcommand (docs/conventions.md; the reading rules are
+// spline/points_csv.hpp's). Numbers are written as the shortest decimal
 // that reads back to the same double (std::to_chars), so output round-trips exactly.
 //
 // Errors are splinefig::cli::Failure with one line naming the source, line and field, e.g.
@@ -11,8 +10,10 @@
 #include "command.hpp"
 
 #include <splinefig/spline/points.hpp>
+#include <splinefig/spline/points_csv.hpp>
 
 #include <istream>
+#include <sstream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,7 +24,20 @@ namespace splinefig::cli {
 // All points in `in`; `source` names it in errors ("stdin", a file name). Rejects text,
 // empty fields, NaN/inf, values out of double range, and lines of another dimension.
 // An input with no points gives an empty Points (dim 0); callers say what they need.
-Points read_points(std::istream& in, std::string_view source = "stdin");
+Points read_points(std::istream& in, std::string_view source = "stdin", const CsvOptions& options = {});
+
+// The points of the input file `path`, or of stdin when it is empty or "-" (spline/points_csv.hpp:
+// a first line of names is skipped). input_name(path) is the name errors use ("stdin", path).
+Points read_input(const std::string& path, const CsvOptions& options);
+std::string input_name(const std::string& path);
+// --delimiter: comma (default), semicolon, tab, space (runs of blanks).
+CsvOptions csv_options(const std::string& delimiter);
+// All of stdin in large reads (std::cin synchronized with stdio reads a character at a time);
+// a NUL byte stops the read at once (the input is not text).
+std::istringstream slurp_stdin();
+// The optional input file argument (none or "-": stdin) and --delimiter, as eval, interp and
+// kernel take them; `what` says what the points are.
+void add_input(CLI::App& app, std::string& input, std::string& delimiter, const std::string& what);
 
 // One finite number from text (a flag value, a CSV field); `what` names it in the error,
 // e.g. "--from". Leading '+' and surrounding blanks are accepted.

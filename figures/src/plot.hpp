@@ -95,12 +95,24 @@ void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occup
 void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter& p, const Guides& g);
 void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
                  const Guides& g);
+// The legend's width and height for entries with these labels.
+std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const Painter& p,
+                                  const Guides& g);
+// The labels of the elements that go to the legend (what draw_elements() will make entries of).
+std::vector<std::string> legend_labels(const AxesSpec& ax);
+// The gap between the plot box and a legend outside it.
+inline constexpr double kLegendOutsideGap = 12;
 
 // Places text next to one of the candidate points (pixels, best first) where it covers the
 // least drawn data and stays inside `box`; marks the chosen spot as used and returns the
 // text's (left, baseline) anchor.
 Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>& candidates, const Rect& box,
                  const Painter& p, Occupancy& occ, double distance = 7);
+
+// The pixel outline of a fill with `under` (plot_fill.cpp): the element's samples, closed by the
+// baseline or by the `to` element's samples reversed.
+std::vector<Vec2> fill_under_polygon(const PreparedAxes& prepared, const FillElement& f, const PixelMap& map,
+                                     double tol);
 
 // Polyline clipping against a rectangle: the runs inside.
 std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& pts, bool closed, const Rect& r);

@@ -273,8 +273,9 @@ void draw_series(const SeriesElement& s, ElementPainter& d) {
   d.label(look.label, e, "series", pts, at);
 }
 
-void draw_fill(const FillElement& f, ElementPainter& d) {
+void draw_fill(const FillElement& f, const PreparedAxes& prepared, ElementPainter& d) {
   std::vector<Vec2> poly;
+  if (!f.under.empty()) poly = fill_under_polygon(prepared, f, d.map, d.tol);
   for (Vec2 q : f.upper) poly.push_back(d.map(q));
   for (size_t i = f.lower.size(); i-- > 0;) poly.push_back(d.map(f.lower[i]));
   poly = clip_polygon(poly, d.box);
@@ -359,7 +360,7 @@ void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p,
           if constexpr (std::is_same_v<T, CurveElement>) draw_curve(e, prepared.curves.at(i), d);
           else if constexpr (std::is_same_v<T, KernelElement>) draw_kernel(e, d);
           else if constexpr (std::is_same_v<T, SeriesElement>) draw_series(e, d);
-          else if constexpr (std::is_same_v<T, FillElement>) draw_fill(e, d);
+          else if constexpr (std::is_same_v<T, FillElement>) draw_fill(e, prepared, d);
           else if constexpr (std::is_same_v<T, TextElement>) draw_text_element(e, d);
           else if constexpr (std::is_same_v<T, AnnotationElement>) draw_annotation(e, d);
           else if constexpr (std::is_same_v<T, RuleElement>) draw_rule(e, d);

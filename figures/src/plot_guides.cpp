@@ -113,25 +113,43 @@ Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>
   return {best_rect.left, best_rect.top + e.ascent};
 }
 
-void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
-                 const Guides& g) {
-  if (entries.empty() || ax.legend == LegendPlace::None) return;
+namespace {
+constexpr double kPad = 8, kSample = 28, kGap = 8, kRow = 19, kColumnGap = 16;
+}  // namespace
+
+std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const Painter& p,
+                                  const Guides& g) {
   const Font& f = g.legend_font;
-  const double pad = 8, sample = 28, gap = 8, row = 19;
   double text_w = 0;
-  for (const auto& e : entries) text_w = std::max(text_w, p.measure(e.label, f).width);
+  for (const auto& l : labels) text_w = std::max(text_w, p.measure(l, f).width);
   Font tf = f;
   tf.bold = true;
   double title_h = 0;
   if (!ax.legend_title.empty()) {
-    text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - sample - gap);
-    title_h = row;
+    text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - kSample - kGap);
+    title_h = kRow;
   }
+  const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(labels.size())));
+  const int rows = static_cast<int>((labels.size() + cols - 1) / cols);
+  const double col_w = kSample + kGap + text_w + kColumnGap;
+  return {std::ceil(kPad + cols * col_w - kColumnGap + kPad), std::ceil(kPad + title_h + kRow * rows + kPad - 4)};
+}
+
+void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
+                 const Guides& g) {
+  if (entries.empty() || ax.legend == LegendPlace::None) return;
+  const Font& f = g.legend_font;
+  const double pad = kPad, sample = kSample, gap = kGap, row = kRow;
+  Font tf = f;
+  tf.bold = true;
+  std::vector<std::string> labels;
+  for (const auto& e : entries) labels.push_back(e.label);
+  const auto [w, h] = legend_size(ax, labels, p, g);
+  double text_w = 0;
+  for (const auto& e : entries) text_w = std::max(text_w, p.measure(e.label, f).width);
+  if (!ax.legend_title.empty()) text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - sample - gap);
   const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(entries.size())));
-  const int rows = static_cast<int>((entries.size() + cols - 1) / cols);
-  const double col_w = sample + gap + text_w + 16;
-  const double w = std::ceil(pad + cols * col_w - 16 + pad);
-  const double h = std::ceil(pad + title_h + row * rows + pad - 4);
+  const double col_w = sample + gap + text_w + kColumnGap;
   const Rect& b = panel.box;
   const double inset = 10;
   struct Spot {
@@ -143,11 +161,13 @@ void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry
   const std::vector<Spot> spots = {{LegendPlace::UpperRight, xr, yt}, {LegendPlace::UpperLeft, xl, yt},
                                    {LegendPlace::LowerRight, xr, yb}, {LegendPlace::LowerLeft, xl, yb},
                                    {LegendPlace::UpperCenter, xc, yt}, {LegendPlace::LowerCenter, xc, yb},
-                                   {LegendPlace::Auto, xr, yc},        {LegendPlace::Auto, xl, yc}};
+                                   {LegendPlace::Auto, xr, yc},        {LegendPlace::Auto, xl, yc},
+                                   {LegendPlace::OutsideRight, b.right + kLegendOutsideGap, b.top}};
   Spot chosen = spots[0];
   if (ax.legend == LegendPlace::Auto) {
     long best = -1;
     for (const auto& s : spots) {
+      if (s.place == LegendPlace::OutsideRight) continue;
       long n = occ.count(Rect{s.x, s.y, s.x + w, s.y + h}.inflated(3));
       if (best < 0 || n < best) best = n, chosen = s;
     }

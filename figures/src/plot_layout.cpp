@@ -41,6 +41,8 @@ void data_bounds(const PreparedAxes& prepared, std::array<double, 2>& xb, std::a
     } else if (const auto* f = std::get_if<FillElement>(&e)) {
       for (Vec2 p : f->upper) add(p);
       for (Vec2 p : f->lower) add(p);
+      if (!f->under.empty() && f->to.empty() && (prepared.axes.y.scale != Scale::Log || f->baseline > 0))
+        grow(yb, hy, f->baseline);
     } else if (const auto* im = std::get_if<ImageElement>(&e)) {
       add({im->extent[0], im->extent[2]});
       add({im->extent[1], im->extent[3]});
@@ -118,6 +120,21 @@ void equalize(std::array<double, 2>& xr, std::array<double, 2>& yr, double w, do
 
 }  // namespace
 
+std::vector<std::string> legend_labels(const AxesSpec& ax) {
+  std::vector<std::string> labels;
+  auto add = [&](const Labelling& l) {
+    if (!l.label.empty() && l.in_legend) labels.push_back(l.label);
+  };
+  for (const PlotElement& e : ax.elements)
+    std::visit(
+        [&](const auto& el) {
+          if constexpr (requires { el.label.in_legend; }) add(el.label);
+          if constexpr (requires { el.look.label.in_legend; }) add(el.look.label);
+        },
+        e);
+  return labels;
+}
+
 double tick_pixel(const AxisMap& m, double value) {
   if (m.scale == Scale::Decibel) return m.p0 + (value - m.d0) / (m.d1 - m.d0) * (m.p1 - m.p0);
   return m.to_pixel(value);
@@ -144,6 +161,12 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
   if (ax.box) {
     box = {(*ax.box)[0], (*ax.box)[1], (*ax.box)[2], (*ax.box)[3]};
   }
+  // A legend outside the box on the right takes its width (and the gap) from the cell.
+  double legend_room = 0;
+  if (ax.legend == LegendPlace::OutsideRight && !ax.box) {
+    const std::vector<std::string> labels = legend_labels(ax);
+    if (!labels.empty()) legend_room = legend_size(ax, labels, p, g)[0] + kLegendOutsideGap;
+  }
   std::array<double, 2> xr = xr0, yr = yr0;
   // A range from the data (or widened for equal aspect) is checked as a given one is.
   auto check_range = [](const AxisSpec& axis, char name, const std::array<double, 2>& r) {
@@ -169,7 +192,7 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
     top = std::max(top, cell.top + (guides ? 0.5 * tick_h + 2 : 0));
     double bottom = cell.bottom - (guides ? g.tick_length + 4 + tick_h + 2 : 0) - (ax.x.label.empty() ? 0 : g.label_font.size + 10);
     double left = cell.left + (guides ? ylabel_w + g.tick_length + 6 : 0) + ylabel_h;
-    double right = cell.right - (guides ? std::max(4.0, 0.5 * xlabel_last) : 0);
+    double right = cell.right - std::max(guides ? std::max(4.0, 0.5 * xlabel_last) : 0, legend_room);
     box = {std::round(left), std::round(top), std::round(right), std::round(bottom)};
     if (box.width() < 10 || box.height() < 10) box = cell;
   }

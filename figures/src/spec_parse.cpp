@@ -262,6 +262,8 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   }
   ParseContext ctx{name, base_dir};
   TableReader r(doc, name, "");
+  const SpecData data = parse_data(r, base_dir);
+  r.set_data(&data);
   FigureSpec spec;
   spec.name = std::filesystem::path(name).stem().string();
   spec.path = name;

@@ -25,4 +25,9 @@ SeriesLook parse_series_look(TableReader& r, LookDefault defaults);
 // the source line of its table (for document order).
 void parse_generated_elements(TableReader& r, std::vector<std::pair<size_t, PlotElement>>& elements);
 
+// [[axes.fill]] with `under` (spec_fill.cpp), and the check, once the axes' elements are all
+// read, that its labels name a curve, kernel or series of the axes.
+FillElement parse_fill_under(TableReader& r);
+void check_fill_references(const AxesSpec& ax);
+
 }  // namespace splinefig::figures::detail

@@ -135,6 +135,7 @@ SeriesElement parse_series(TableReader& r, LookDefault defaults, const char* wha
 }
 
 FillElement parse_fill(TableReader& r) {
+  if (r.has("under")) return parse_fill_under(r);  // spec_fill.cpp
   FillElement f;
   if (r.has("points")) {
     f.polygon = true;
@@ -246,8 +247,8 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   ax.equal_aspect = r.choice("aspect", {"auto", "equal"}, 0) == 1;
   ax.zero_line = r.boolean("zero_line", false);
   ax.frame = static_cast<Frame>(r.choice("frame", {"box", "left-bottom", "none"}, 1));
-  ax.legend = static_cast<LegendPlace>(r.choice(
-      "legend", {"auto", "none", "upper left", "upper right", "lower left", "lower right", "upper center", "lower center"}, 0));
+  ax.legend = static_cast<LegendPlace>(std::min(8, r.choice("legend", {"auto", "none", "upper left", "upper right",
+      "lower left", "lower right", "upper center", "lower center", "outside right", "outside-right"}, 0)));
   ax.legend_title = r.label("legend_title", "");
   ax.legend_columns = r.integer("legend_columns", 1, 1, 16);
   ax.palette = r.string("palette", ax.palette);
@@ -297,6 +298,7 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
     ax.elements.push_back(std::move(e));
     ax.element_origins.push_back(origin.empty() ? ax.where + ": " + r.path() : origin);
   }
+  check_fill_references(ax);  // spec_fill.cpp
 
   if (ax.y.scale == Scale::Log) {
     for (const auto& e : ax.elements)

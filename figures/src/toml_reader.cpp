@@ -150,7 +150,9 @@ void TableReader::fail_at(const toml::node& node, std::string_view key, const st
   throw SpecFileError(loc + ": " + key_path(key) + ": " + message);
 }
 
-bool TableReader::has(std::string_view key) const { return table_.contains(key); }
+bool TableReader::has(std::string_view key) const {
+  return table_.contains(key) || (data_ && table_.contains(std::string(key) + "_file"));
+}
 
 const toml::node* TableReader::node(std::string_view key) {
   used_.insert(std::string(key));
@@ -311,6 +313,8 @@ std::optional<Vec2> TableReader::opt_point(std::string_view key) {
 }
 
 std::vector<Vec2> TableReader::points(std::string_view key) {
+  if (data_)
+    if (auto p = data_points(*this, key, *data_)) return std::move(*p);
   std::vector<Vec2> out;
   const toml::node* n = node(key);
   if (!n) return out;

@@ -4,6 +4,8 @@
 // rejects the keys nobody asked for (typos such as `colour`), so no key is silently ignored.
 #include <splinefig/figures/spec.hpp>
 
+#include "spec_data.hpp"
+
 #include <toml++/toml.h>
 
 #include <optional>
@@ -41,7 +43,10 @@ class TableReader {
   std::vector<double> numbers(std::string_view key);  // [] if absent
   std::vector<std::string> strings(std::string_view key);
   std::optional<Vec2> opt_point(std::string_view key);
-  std::vector<Vec2> points(std::string_view key);  // [[x,y], ...]; [] if absent
+  // [[x,y], ...]; [] if absent. With set_data(): also KEY_file = "x.csv" and KEY = "NAME" of
+  // [data] (spec_data.hpp), and has(KEY) is true when KEY_file is there.
+  std::vector<Vec2> points(std::string_view key);
+  void set_data(const SpecData* data) { data_ = data; }
   // Keys that must be there: fail with `missing` when they are not.
   Vec2 required_point(std::string_view key, const std::string& missing);
   std::string required_label(std::string_view key, const std::string& missing);
@@ -59,6 +64,7 @@ class TableReader {
     int i = 0;
     for (const toml::table* t : tables(key)) {
       TableReader sub(*t, file_, single ? key_path(key) : key_path(key) + "[" + std::to_string(i++) + "]");
+      sub.set_data(data_);
       read(sub, *t);
       sub.finish();
     }
@@ -90,6 +96,7 @@ class TableReader {
   const toml::table& table_;
   std::string file_, path_;
   std::set<std::string, std::less<>> used_;
+  const SpecData* data_ = nullptr;
 };
 
 std::string line_of(const std::string& file, const toml::source_region& where);

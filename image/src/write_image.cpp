@@ -75,8 +75,12 @@ std::vector<T> integer_values(const Image& im) {
 void write_image(const std::string& path, const Image& im, const WriteOptions& options) {
   const std::string ext = lower_extension(path);
   const bool png = ext == ".png";
+  const bool jpeg = ext == ".jpg" || ext == ".jpeg";
   const bool floats = ext == ".exr" || ext == ".tif" || ext == ".tiff";
-  if (!png && !floats) unwritable(path, "unsupported image format '" + ext + "' (use .png or .exr)");
+  if (!png && !jpeg && !floats) unwritable(path, "unsupported image format '" + ext + "' (use .png, .jpg or .exr)");
+  if (jpeg && options.bits != 8) unwritable(path, "JPEG holds 8 bits per channel, not " + std::to_string(options.bits));
+  if (jpeg && im.channels != 1 && im.channels != 3)
+    unwritable(path, "JPEG holds 1 or 3 channels (no alpha); this image has " + std::to_string(im.channels));
   if (im.width < 1 || im.height < 1 || im.channels < 1 ||
       im.pixels.size() != std::size_t(im.width) * std::size_t(im.height) * std::size_t(im.channels))
     unwritable(path, "image has no pixels or a wrong buffer size");
@@ -123,6 +127,8 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
     // as fast to encode.
     spec.int_attributes.emplace_back("png:compressionLevel", 4);
     spec.int_attributes.emplace_back("png:filter", 8);  // PNG_FILTER_NONE
+    if (jpeg) text.emplace_back("Compression", "jpeg:95");
+    if (jpeg) text.emplace_back("jpeg:subsampling", "4:4:4");  // no chroma halved at colour edges
     if (options.bits == 16) {
       words = integer_values<std::uint16_t>(im);
       spec.data = words.data();

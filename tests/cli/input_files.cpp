@@ -51,7 +51,7 @@ TEST_CASE("render: a directory, /dev/zero or a FIFO as the spec is an error nami
 TEST_CASE("eval and interp: /dev/zero or a directory on stdin, or as --betas, is an error") {
   const fs::path dir = scratch("csv");
   check_fails({"eval", "--basis", "bspline"}, "stdin line 1: a NUL byte: the input is not text", "/dev/zero");
-  check_fails({"interp", "--output", "bspline"}, "stdin: a NUL byte: the input is not text", "/dev/zero");
+  check_fails({"interp", "--output", "bspline"}, "stdin line 1: a NUL byte: the input is not text", "/dev/zero");
   check_fails({"eval", "--basis", "bspline"}, "cannot read stdin", dir.string());
   check_fails({"interp", "--output", "bspline"}, "cannot read stdin", dir.string());
   check_fails({"eval", "--basis", "beta", "--betas", "/dev/zero"}, "--betas /dev/zero: not a regular file");

@@ -13,9 +13,7 @@
 namespace figtest {
 
 inline splinefig::Image render_builtin_figure(const std::string& name) {
-  const splinefig::figures::FigureSpec spec =
-      splinefig::figures::load_spec(std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/" + name + ".toml");
-  return splinefig::figures::render_figure(spec, {1, 0}).image;
+  return splinefig::figures::render_spec_to_image(std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/" + name + ".toml");
 }
 
 inline void check_figure_reference(const std::string& name) {

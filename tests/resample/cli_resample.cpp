@@ -92,7 +92,7 @@ TEST_CASE("resample cli: bad input gives one line, a non-zero exit and no output
       {I + O + " --scale 0.01 --filter bspline", "becomes 0"},
       {I + O + " --scale 2 --filter beta:b1=5 --interpolating", "no stable inverse"},
       {q(dir / "missing.png") + O + " --scale 2 --filter bspline", "missing.png"},
-      {I + " -o " + q(dir / "out.jpg") + " --scale 2 --filter bspline", "unsupported output format"},
+      {I + " -o " + q(dir / "out.bmp") + " --scale 2 --filter bspline", "unsupported output format"},
   };
   for (const auto& [args, what] : cases) {
     INFO(args);

@@ -56,6 +56,12 @@ struct FigureScene {
 };
 FigureScene figure_scene(const FigureSpec& spec, double scale = 1);
 
+// The figure of the spec file at `path`, rendered: load_spec() then render_figure(), for tests
+// that check a spec against a reference in one line,
+//   CHECK_THAT(render_spec_to_image("fig.toml"), MatchesReference("fig.png"));
+// Throws SpecFileError (a bad spec, a canvas too large at options.scale) as those do.
+Image render_spec_to_image(const std::string& path, const RenderOptions& options = {});
+
 // The layout alone (no rasterization): the same info render_figure() reports.
 FigureInfo layout_figure(const FigureSpec& spec, double scale = 1);
 

@@ -184,6 +184,11 @@ struct FillElement {
   bool polygon = false;
   Color color;
   Labelling label;
+  // `under = "LABEL"`: the area between the curve, kernel or series of that label and the
+  // line y = baseline, or the element labelled `to` (upper and lower are then empty).
+  std::string under, to;
+  double baseline = 0;
+  std::string origin, to_origin;  // "FILE:LINE: axes.fill[i].under" (.to), for the check of the labels
 };
 
 struct TextElement {
@@ -346,7 +351,8 @@ struct AxisSpec {
   std::vector<double> marks;                    // knots marked on the axis (small triangles)
 };
 
-enum class LegendPlace { Auto, None, UpperLeft, UpperRight, LowerLeft, LowerRight, UpperCenter, LowerCenter };
+// OutsideRight: right of the plot box, its top level with the box's; the box narrows to make room.
+enum class LegendPlace { Auto, None, UpperLeft, UpperRight, LowerLeft, LowerRight, UpperCenter, LowerCenter, OutsideRight };
 
 struct AxesSpec {
   AxisSpec x, y;

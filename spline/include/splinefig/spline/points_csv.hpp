@@ -1,0 +1,45 @@
+#pragma once
+// Points read from CSV text, the rules every reader of point data shares (the command line's
+// eval, interp and kernel, a figure spec's points_file): one point per line, coordinates split
+// by the delimiter, any dimension >= 1 but the same on every line; blank lines and lines whose
+// first non-blank character is '#' are ignored. The first data line may be a header of names
+// (no field of it is a number); it is skipped, and every point must then have as many
+// coordinates as it has names.
+//
+// Errors are CsvError with one line naming the source, line and field, e.g.
+//   "knots.csv line 7, field 2: 'abc' is not a number".
+#include <splinefig/spline/points.hpp>
+
+#include <cstddef>
+#include <istream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace splinefig {
+
+struct CsvError : std::runtime_error {
+  std::size_t line;  // 1-based line of the source, 0 when the error is not about one line
+  CsvError(const std::string& what, std::size_t line) : std::runtime_error(what), line(line) {}
+};
+
+struct CsvOptions {
+  char delimiter = ',';  // ' ' splits at runs of blanks (spaces and tabs)
+  bool header = true;    // accept a first line of names
+};
+
+// "comma" or ",", "semicolon" or ";", "tab" or "\t", "space" or " " (runs of spaces and tabs);
+// nullopt for anything else.
+std::optional<char> parse_delimiter(std::string_view name);
+
+// All points in `in`; `source` names it in errors ("stdin", a file name). Rejects text,
+// empty fields, NaN/inf, values out of double range, lines of another dimension, a NUL byte and
+// a line over 1 MiB (input that is not text). An input with no points gives dim 0.
+Points read_csv_points(std::istream& in, std::string_view source, const CsvOptions& options = {});
+
+// One finite number (leading '+' and surrounding blanks accepted); false with `why` ("is
+// empty", "'x' is not a number", ...) otherwise.
+bool parse_csv_number(std::string_view text, double& value, std::string& why);
+
+}  // namespace splinefig

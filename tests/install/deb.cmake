@@ -1,0 +1,82 @@
+# `cpack -G DEB` builds the package; unpacked into a temporary root (dpkg -x), its command
+# draws a built-in figure from the package's own specs, and a consumer project builds against
+# the package's CMake config and runs. Reports skipped (SPLINEFIG-SKIPPED) without dpkg-dev.
+find_program(DPKG_DEB dpkg-deb)
+find_program(DPKG_SHLIBDEPS dpkg-shlibdeps)
+if(NOT DPKG_DEB OR NOT DPKG_SHLIBDEPS)
+  message("SPLINEFIG-SKIPPED: dpkg-deb or dpkg-shlibdeps (package dpkg-dev) not found")
+  return()
+endif()
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+execute_process(COMMAND ${CMAKE_CPACK_COMMAND} -G DEB --config ${BINARY_DIR}/CPackConfig.cmake -B ${WORK_DIR}/package
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "cpack -G DEB failed: ${rc} ${out}${err}")
+endif()
+file(GLOB debs ${WORK_DIR}/package/splinefig_*.deb)
+list(LENGTH debs count)
+if(NOT count EQUAL 1)
+  message(FATAL_ERROR "cpack made ${count} .deb files: ${debs}")
+endif()
+
+# Its control fields: the run-time libraries dpkg-shlibdeps found, and the font.
+execute_process(COMMAND ${DPKG_DEB} -f ${debs} Package Version Depends RESULT_VARIABLE rc OUTPUT_VARIABLE control)
+if(rc)
+  message(FATAL_ERROR "dpkg-deb -f failed: ${rc}")
+endif()
+foreach(want "Package: splinefig" "libopenimageio" "libstdc\\+\\+6" "libc6" "fonts-dejavu-core")
+  if(NOT control MATCHES "${want}")
+    message(FATAL_ERROR "the package's control lacks ${want}:\n${control}")
+  endif()
+endforeach()
+
+# What it holds.
+set(root ${WORK_DIR}/root)
+execute_process(COMMAND ${DPKG_DEB} -x ${debs} ${root} RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "dpkg-deb -x failed: ${rc}")
+endif()
+foreach(path usr/bin/splinefig usr/include/splinefig/figures/figure.hpp usr/include/splinefig/testing.hpp
+        usr/include/splinefig/version.hpp usr/lib/cmake/splinefig/splinefigConfig.cmake usr/lib/pkgconfig/splinefig.pc
+        usr/share/splinefig/specs/bias.toml usr/share/doc/splinefig/README.md usr/share/doc/splinefig/docs/cli.md)
+  if(NOT EXISTS ${root}/${path})
+    message(FATAL_ERROR "the package has no /${path}")
+  endif()
+endforeach()
+file(GLOB libs ${root}/usr/lib/libsplinefig_*.a)
+list(LENGTH libs count)
+if(count LESS 7)
+  message(FATAL_ERROR "the package holds only ${count} libraries: ${libs}")
+endif()
+
+# The unpacked command draws from the package's specs (run outside the source and build trees):
+# a title changed in the unpacked copy shows in index.json.
+file(READ ${root}/usr/share/splinefig/specs/bias.toml spec)
+string(REGEX REPLACE "\ntitle = \"[^\"]*\"" "\ntitle = \"Bias as unpacked\"" spec "${spec}")
+file(WRITE ${root}/usr/share/splinefig/specs/bias.toml "${spec}")
+execute_process(COMMAND ${root}/usr/bin/splinefig figures --out ${WORK_DIR}/figures --only bias
+  WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT EXISTS ${WORK_DIR}/figures/bias.png)
+  message(FATAL_ERROR "splinefig figures from the package failed: ${rc} ${out}${err}")
+endif()
+file(READ ${WORK_DIR}/figures/index.json index)
+if(NOT index MATCHES "Bias as unpacked")
+  message(FATAL_ERROR "splinefig figures did not draw the package's own bias.toml: ${index}")
+endif()
+
+# A consumer project against the package's CMake config.
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install/consumer -B ${WORK_DIR}/consumer
+  -DCMAKE_PREFIX_PATH=${root}/usr RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "configuring the consumer against the package failed: ${rc} ${out}${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "building the consumer against the package failed: ${rc} ${out}${err}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/consumer/consumer ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(rc)
+  message(FATAL_ERROR "the consumer built against the package failed: ${rc} ${out}")
+endif()
+message(STATUS "the package ${debs} installs and runs:\n${control}")
