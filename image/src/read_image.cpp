@@ -3,6 +3,7 @@
 #include <splinefig/image/srgb.hpp>
 
 #include "one_line.hpp"
+#include "exr_check.hpp"
 #include "png_check.hpp"
 
 #include "codec.hpp"
@@ -87,6 +88,7 @@ void check_image_header(const std::string& path) {
     check_png_header(path);
     return;
   }
+  if (has_exr_signature(path)) check_exr_header(path);
   const detail::ImageCodec& codec = load_codec(path);
   detail::CodecHeader spec;
   std::string error;
@@ -110,6 +112,7 @@ Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
     check_png_header(path);  // the declared size first: nothing is inflated for an oversized image
     check_png_structure(path);
   }
+  if (has_exr_signature(path)) check_exr_header(path);  // no attribute larger than the file
 
   const detail::ImageCodec& codec = load_codec(path);
   detail::CodecHeader spec;

@@ -31,19 +31,21 @@ fs::path scratch(const std::string& name) {
 }
 
 // Runs `command` (a shell command line) as user nobody with at most `nproc` processes and
-// threads for that user; the exit code.
-int run_limited(const std::string& command, int nproc) {
+// threads for that user; the exit code (-1 if killed after `seconds`).
+int run_limited(const std::string& command, int nproc, int seconds = 300) {
   const std::string inner = "ulimit -u " + std::to_string(nproc) + " && exec " + command + " 2>/dev/null";
-  const std::string cmd = "timeout 300 setpriv --reuid=65534 --regid=65534 --clear-groups bash -c " + shell_quote(inner);
+  const std::string cmd = "timeout " + std::to_string(seconds) + " setpriv --reuid=65534 --regid=65534 --clear-groups bash -c " + shell_quote(inner);
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 // The smallest limit under which `command` runs with one thread of its own (the libraries
-// start a few), or 0 if there is none up to 64.
+// start a few), or 0 if there is none up to 64. Below it, a library that OpenImageIO loads
+// (log4cplus, whose static initializer starts a thread pool) can wait forever for a thread the
+// system refused, so each probe is given a short time.
 int baseline_nproc(const std::string& command) {
   for (int n = 2; n <= 64; ++n)
-    if (run_limited(command, n) == 0) return n;
+    if (run_limited(command, n, 8) == 0) return n;
   return 0;
 }
 

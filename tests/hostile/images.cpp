@@ -102,3 +102,21 @@ TEST_CASE("an unreadable PNG's message is one line whatever bytes its chunk type
     CHECK_THAT(e.what(), Catch::Contains("corrupt PNG"));
   }
 }
+
+// Found by fuzz_resample: OpenEXR headers of a few hundred bytes whose first attribute declares
+// about 2 GB; OpenEXR allocated that before finding the file too short.
+TEST_CASE("an OpenEXR attribute larger than its file is refused before OpenEXR allocates it") {
+  for (int i = 1; i <= 3; ++i) {
+    const std::string path = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/hostile/data/exr_attribute_size_" + std::to_string(i) + ".exr";
+    INFO(path);
+    try {
+      (void)splinefig::read_image(path);
+      FAIL("the corrupt EXR was read");
+    } catch (const splinefig::UnreadableImage& e) {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find('\n') == std::string::npos);
+      CHECK_THAT(e.what(), Catch::Contains("more than the file holds"));
+    }
+    CHECK_THROWS_WITH(splinefig::check_image_header(path), Catch::Contains("more than the file holds"));
+  }
+}
