@@ -31,10 +31,11 @@ fs::path scratch(const std::string& name) {
 }
 
 // Runs `command` (a shell command line) as user nobody with at most `nproc` processes and
-// threads for that user; the exit code (-1 if killed after `seconds`).
+// threads for that user; the exit code (-1 if killed after `seconds`: SIGKILL, since a process
+// stuck loading OpenImageIO with its signals blocked by the atomic writer would not see SIGTERM).
 int run_limited(const std::string& command, int nproc, int seconds = 300) {
   const std::string inner = "ulimit -u " + std::to_string(nproc) + " && exec " + command + " 2>/dev/null";
-  const std::string cmd = "timeout " + std::to_string(seconds) + " setpriv --reuid=65534 --regid=65534 --clear-groups bash -c " + shell_quote(inner);
+  const std::string cmd = "timeout -s KILL " + std::to_string(seconds) + " setpriv --reuid=65534 --regid=65534 --clear-groups bash -c " + shell_quote(inner);
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
