@@ -73,6 +73,9 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
       ready.notify_all();
     }
   };
+  // The image I/O module first: a library it loads starts threads of its own when loaded, and
+  // under a thread limit those must not find the budget taken by the workers.
+  preload_image_io();
   // Workers the system refuses (RLIMIT_NPROC, memory): the specs go to those that started, or
   // are rendered on this thread if none did.
   std::vector<std::thread> pool;
@@ -81,8 +84,6 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
   } catch (const std::system_error&) {
   }
   if (pool.empty()) work();
-  // While the workers render, this thread loads the image I/O module their writes will need.
-  preload_image_io();
   for (size_t i = 0; i < specs.size(); ++i) {
     BatchResult r;
     {
