@@ -52,7 +52,8 @@ PixelPoly in_pixels(const PixelPoly& data, const PixelMap& map) {
 void sample_poly(const PixelPoly& p, double u0, double u1, double tol, bool skip_first, std::vector<Vec2>& out) {
   double len = u1 - u0;
   double m2 = p.second_derivative_bound(u0, u1) * len * len;
-  int steps = std::clamp(static_cast<int>(std::ceil(std::sqrt(m2 / (8 * tol)))), 1, kMaxSteps);
+  const double n = std::ceil(std::sqrt(m2 / (8 * tol)));  // clamped before the conversion
+  const int steps = !(n >= 1) ? 1 : n >= kMaxSteps ? kMaxSteps : static_cast<int>(n);
   for (int j = skip_first ? 1 : 0; j <= steps; ++j) out.push_back(p.at(u0 + len * j / steps));
 }
 
