@@ -45,6 +45,15 @@ void check_report(const FilterReport& r, const std::string& basis) {
       throw Failure("--basis " + basis + ": the filter's " + name + " overflows the range of a double");
 }
 
+// One line "x,f(x)"; a value that is not finite is an error (`what` names it: "k(x) at x = ").
+template <class F>
+void append_row(std::string& text, double x, const Options& o, const char* what, F& f) {
+  cli::append_number(text, x);
+  text += ',';
+  cli::append_number(text, finite(f(x), o.basis, what, x));
+  text += '\n';
+}
+
 // x,f(x) lines for x_i = x0 + i*step (not accumulated), up to x1 allowing for the rounding of
 // (x1-x0)/step; the flags as given are named in messages, and so is a value that is not finite
 // (`what` names it: "k(x) at x = ").
@@ -57,13 +66,7 @@ int write_rows(const Options& o, double x0, double x1, double step, const char* 
   const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
   std::string text;
   text.reserve(static_cast<size_t>(rows) * 24);
-  for (long long i = 0; i < rows; ++i) {
-    const double x = x0 + static_cast<double>(i) * step;
-    cli::append_number(text, x);
-    text += ',';
-    cli::append_number(text, finite(f(x), o.basis, what, x));
-    text += '\n';
-  }
+  for (long long i = 0; i < rows; ++i) append_row(text, x0 + static_cast<double>(i) * step, o, what, f);
   cli::write_stdout(text);
   return 0;
 }
@@ -81,13 +84,7 @@ int write_input_rows(const Options& o, const char* what, F&& f) {
     throw Failure(cli::input_name(o.input) + ": " + std::to_string(xs.dim) + " values per line, expected one (x)");
   std::string text;
   text.reserve(xs.size() * 24);
-  for (std::size_t i = 0; i < xs.size(); ++i) {
-    const double x = xs[i][0];
-    cli::append_number(text, x);
-    text += ',';
-    cli::append_number(text, finite(f(x), o.basis, what, x));
-    text += '\n';
-  }
+  for (std::size_t i = 0; i < xs.size(); ++i) append_row(text, xs[i][0], o, what, f);
   cli::write_stdout(text);
   return 0;
 }

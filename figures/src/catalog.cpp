@@ -1,6 +1,7 @@
 // Built-in spec lookup, index.json and the gallery page.
 #include <splinefig/figures/catalog.hpp>
 #include <splinefig/image/atomic_file.hpp>
+#include <splinefig/vector/vector.hpp>
 
 #include "rich_text.hpp"
 
@@ -65,20 +66,6 @@ double spec_order(const fs::path& p) {
 }
 
 const char* scale_name(Scale s) { return s == Scale::Log ? "log" : s == Scale::Decibel ? "db" : "linear"; }
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -216,14 +203,14 @@ std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, con
 }
 
 std::string markup_html(const std::string& markup) {
-  if (!detail::markup_problem(markup).empty()) return html_escape(markup);
+  if (!detail::markup_problem(markup).empty()) return vector::xml_escape(markup);
   const double size = 10;
   const detail::RichText rt = detail::set_text(markup, size, [](const std::string& t, double, bool) {
     return render::TextExtent{static_cast<double>(t.size()), 1, 1};
   });
   std::string out;
   for (const detail::Run& r : rt.runs) {
-    std::string t = html_escape(r.text);
+    std::string t = vector::xml_escape(r.text);
     if (r.italic) t = "<i>" + t + "</i>";
     if (r.size < size && r.dy > 0) t = "<sub>" + t + "</sub>";
     else if (r.size < size && r.dy < 0) t = "<sup>" + t + "</sup>";
@@ -248,20 +235,20 @@ void figure_html(std::ostringstream& o, const FigureInfo& f) {
   std::string png = file_with(f, ".png"), svg = file_with(f, ".svg");
   const std::string shown = png.empty() ? (svg.empty() ? (f.files.empty() ? "" : f.files.front()) : svg) : png;
   const bool natural = f.caption.find("at 1:1") != std::string::npos;
-  const std::string title = html_escape(f.title.empty() ? f.name : f.title);
-  o << "<figure id=\"" << html_escape(f.name) << "\"" << (natural ? " class=\"natural\"" : "") << ">\n  <div class=\"frame\"><a href=\""
-    << html_escape(shown) << "\"><img src=\"" << html_escape(shown) << "\"";
+  const std::string title = vector::xml_escape(f.title.empty() ? f.name : f.title);
+  o << "<figure id=\"" << vector::xml_escape(f.name) << "\"" << (natural ? " class=\"natural\"" : "") << ">\n  <div class=\"frame\"><a href=\""
+    << vector::xml_escape(shown) << "\"><img src=\"" << vector::xml_escape(shown) << "\"";
   // The vector file is the sharp source on high-density screens; a 1:1 figure keeps its pixels.
-  if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << html_escape(png) << " 1x, " << html_escape(svg) << " 2x\"";
+  if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << vector::xml_escape(png) << " 1x, " << vector::xml_escape(svg) << " 2x\"";
   o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << title << "\"></a></div>\n"
     << "  <figcaption><b>" << title << "</b> " << markup_html(f.caption) << "\n    <span class=\"files\">";
   for (const auto& file : f.files) {
     const auto dot = file.find_last_of('.');
     std::string label = dot == std::string::npos ? file : file.substr(dot + 1);
     std::transform(label.begin(), label.end(), label.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    o << "<a href=\"" << html_escape(file) << "\">" << html_escape(label) << "</a>";
+    o << "<a href=\"" << vector::xml_escape(file) << "\">" << vector::xml_escape(label) << "</a>";
   }
-  o << "<code>" << html_escape(f.name) << "</code></span></figcaption>\n</figure>\n";
+  o << "<code>" << vector::xml_escape(f.name) << "</code></span></figcaption>\n</figure>\n";
 }
 
 }  // namespace
@@ -322,7 +309,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
     o << "</div>\n</section>\n";
   }
   o << "<footer>splinefig";
-  if (!options.version.empty()) o << " " << html_escape(options.version);
+  if (!options.version.empty()) o << " " << vector::xml_escape(options.version);
   if (options.date >= 0) {
     const std::time_t t = static_cast<std::time_t>(options.date);
     std::tm tm{};

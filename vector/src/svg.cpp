@@ -30,20 +30,6 @@ void point(std::string& out, Vec2 p) {
   num(out, p.y);
 }
 
-std::string escape(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 const char* base64_chars = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 std::string base64(const std::vector<unsigned char>& in) {
   std::string out;
@@ -118,7 +104,7 @@ class SvgWriter final : public render::SceneVisitor {
   }
   void text(std::string_view s, Vec2, const render::TextStyle& style, const render::Path& outline) override {
     if (outline.empty() || style.color.a <= 0) return;
-    const std::string label = escape(s);
+    const std::string label = xml_escape(s);
     out += "<path aria-label=\"" + label + "\" d=\"";
     path(outline);
     out += "\"";
@@ -230,7 +216,7 @@ std::string to_svg(const render::Scene& scene, const Options& o) {
   num(out, h * css);
   out += "\"";
   out += " viewBox=\"0 0 " + std::to_string(w) + " " + std::to_string(h) + "\">\n";
-  if (!o.title.empty()) out += "<title>" + escape(o.title) + "</title>\n";
+  if (!o.title.empty()) out += "<title>" + xml_escape(o.title) + "</title>\n";
   const render::Color bg = scene.background();
   if (bg.a > 0) {
     out += "<rect width=\"" + std::to_string(w) + "\" height=\"" + std::to_string(h) + "\" fill=\"" + detail::hex(bg) + "\"";
@@ -245,6 +231,20 @@ std::string to_svg(const render::Scene& scene, const Options& o) {
   scene.visit(sw);
   out += sw.out;
   out += "</svg>\n";
+  return out;
+}
+
+std::string xml_escape(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
   return out;
 }
 

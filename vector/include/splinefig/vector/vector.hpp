@@ -8,6 +8,7 @@
 #include <splinefig/renderer/renderer.hpp>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace splinefig::vector {
@@ -32,6 +33,10 @@ std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& opt
 
 // True for a path ending in .svg or .pdf (any case).
 bool is_vector_file(const std::string& path);
+
+// Text as XML character data or a quoted attribute value (&, <, >, " escaped): for SVG, and
+// for the HTML that shows it.
+std::string xml_escape(std::string_view text);
 
 // Writes to_svg or to_pdf by the extension, atomically (image/atomic_file.hpp). Throws
 // UnwritableFile naming the path, std::invalid_argument for a dpi out of bounds.
