@@ -5,6 +5,7 @@
 // The function returns the process exit code; it reports errors by throwing
 // splinefig::cli::Failure (one line, printed as "splinefig NAME: message").
 #include <splinefig/spline/basis.hpp>
+#include <splinefig/spline/points_csv.hpp>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -58,26 +59,8 @@ auto parse_spec_flag(const std::string& flag, const std::string& spec, Parse&& p
   }
 }
 
-// `text` as it may be shown on a terminal in a one-line message: control characters (a
-// newline included), DEL and every byte >= 0x80 of the user's input echoed in it are written
-// as \xNN, so that raw bytes, escape sequences or an invisible byte order mark can neither
-// garble the terminal nor hide in the message.
-inline std::string printable(std::string_view text) {
-  static constexpr char hex[] = "0123456789abcdef";
-  std::string out;
-  out.reserve(text.size());
-  for (const char ch : text) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c < 0x20 || c >= 0x7f) {
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    } else {
-      out += ch;
-    }
-  }
-  return out;
-}
+// printable(text): spline/points_csv.hpp (input bytes shown escaped in one-line messages).
+using splinefig::printable;
 
 // A file the command reads by name (a spec, a CSV): it must be a regular file, so that a
 // directory is not taken for an empty input and a FIFO or device (/dev/zero) cannot hang the

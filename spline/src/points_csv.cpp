@@ -19,19 +19,7 @@ std::string_view trim(std::string_view s) {
 
 // Text for an error message, cut short, with control and non-ASCII bytes as \xNN.
 std::string quoted(std::string_view s) {
-  static constexpr char hex[] = "0123456789abcdef";
-  std::string out = "'";
-  for (const char ch : s.substr(0, 40)) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c < 0x20 || c >= 0x7f) {
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    } else {
-      out += ch;
-    }
-  }
-  return out + (s.size() > 40 ? "...'" : "'");
+  return "'" + printable(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
 }
 
 std::string at(std::string_view source, std::size_t line) {
@@ -171,6 +159,23 @@ Points read_csv_points(std::istream& in, std::string_view source, const CsvOptio
   }
   if (in.bad()) throw CsvError("cannot read " + std::string(source), 0);
   return pts;
+}
+
+std::string printable(std::string_view text) {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c >= 0x7f) {
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    } else {
+      out += ch;
+    }
+  }
+  return out;
 }
 
 }  // namespace splinefig

@@ -42,4 +42,10 @@ Points read_csv_points(std::istream& in, std::string_view source, const CsvOptio
 // empty", "'x' is not a number", ...) otherwise.
 bool parse_csv_number(std::string_view text, double& value, std::string& why);
 
+// `text` as it may be shown on a terminal in a one-line message: control characters (a
+// newline included), DEL and every byte >= 0x80 of the input echoed in it are written as \xNN,
+// so that raw bytes, escape sequences or an invisible byte order mark can neither garble the
+// terminal nor hide in the message.
+std::string printable(std::string_view text);
+
 }  // namespace splinefig
