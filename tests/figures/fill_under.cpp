@@ -2,6 +2,7 @@
 // to a baseline or to another element. Checked against independent values: the B-spline basis
 // function's integral (1, the partition of unity) as inked area, and a straight series' fill
 // against the same triangle typed as a polygon; bad references name the fill's line and key.
+#include "spec_error_check.hpp"
 #include <catch2/catch.hpp>
 
 #include <splinefig/figures/figure.hpp>
@@ -27,14 +28,7 @@ double ink(const Image& im) {
   return sum;
 }
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_spec(text, "f.toml");
-  } catch (const SpecFileError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::string& text) { return figtest::spec_error(text, "f.toml"); }
 
 }  // namespace
 
@@ -95,13 +89,7 @@ TEST_CASE("fill under: bad references and keys name the fill's line and key") {
        "f.toml:16: axes.fill[0].under: 2 elements are labelled \"c\""},
       {curve + "[[axes.fill]]\nunder = \"c\"\nunder_color = \"#000000\"\n", "f.toml:14: axes.fill[0].under_color: unknown key"},
   };
-  for (const auto& c : cases) {
-    INFO(c.text);
-    const std::string msg = error_of(c.text);
-    CAPTURE(msg);
-    CHECK(msg.rfind(c.expect, 0) == 0);
-    CHECK(msg.find('\n') == std::string::npos);
-  }
+  figtest::check_spec_errors(cases, "f.toml");
   // A fill may come before the element it names (document order is drawing order).
   CHECK(error_of(kAxes + "[[axes.fill]]\nunder = \"c\"\n[[axes.curve]]\nknots = [[0, 0], [1, 1], [2, 0], [3, 1]]\nlabel = \"c\"\n").empty());
 }

@@ -2,6 +2,7 @@
 // line's rules, relative to the spec) and [data] NAME = [[x, y], ...] used as KEY = "NAME".
 // Each gives the same spec as the points typed inline; bad data is one line naming the spec's
 // line and key, and the data file's line.
+#include "spec_error_check.hpp"
 #include <catch2/catch.hpp>
 
 #include <splinefig/figures/figure.hpp>
@@ -43,15 +44,6 @@ bool same(const std::vector<std::vector<splinefig::figures::Vec2>>& a, const std
       if (a[i][j].x != b[i][j].x || a[i][j].y != b[i][j].y) return false;
   }
   return true;
-}
-
-std::string error_of(const std::string& text, const std::string& dir = ".") {
-  try {
-    parse_spec(text, "s.toml", dir);
-  } catch (const SpecFileError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 std::string load_error(const fs::path& spec) {
@@ -131,11 +123,5 @@ TEST_CASE("spec data: wrong types, unknown names and doubled keys are errors nam
       // Only where points are read: elsewhere KEY_file is an unknown key.
       {kCanvas + "[[circle]]\ncenter = [1, 1]\nradius = 1\ncenter_file = \"c.csv\"\n", "s.toml:7: circle[0].center_file: unknown key"},
   };
-  for (const auto& c : cases) {
-    INFO(c.text);
-    const std::string msg = error_of(c.text);
-    CAPTURE(msg);
-    CHECK(msg.rfind(c.expect, 0) == 0);
-    CHECK(msg.find('\n') == std::string::npos);
-  }
+  figtest::check_spec_errors(cases, "s.toml");
 }

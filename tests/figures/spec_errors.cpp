@@ -1,5 +1,6 @@
 // Bad figure specs: every one gives one line naming the file, the line and the key, and the
 // commands write no output file.
+#include "spec_error_check.hpp"
 #include <catch2/catch.hpp>
 
 #include <splinefig/figures/spec.hpp>
@@ -12,14 +13,7 @@ using splinefig::figures::SpecFileError;
 namespace {
 
 // The message parse_spec throws for `text`, or "" if it parses.
-std::string error_of(const std::string& text) {
-  try {
-    parse_spec(text, "bad.toml");
-  } catch (const SpecFileError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::string& text) { return figtest::spec_error(text, "bad.toml"); }
 
 const char* kAxes = "[canvas]\nwidth = 100\nheight = 80\n[axes]\nx_range = [0, 1]\ny_range = [0, 1]\n";
 
@@ -52,13 +46,7 @@ TEST_CASE("bad specs name the file, the line and the key") {
       {"[canvas]\nwidth = 10\n[canvas\n", "bad.toml:3"},
       {"[layout]\nrows = 1\ncols = 1\n[[axes]]\ncell = [1, 0]\n", "bad.toml:4: axes.cell: [1, 0] is outside the 1x1 layout"},
   };
-  for (const auto& c : cases) {
-    INFO(c.text);
-    std::string msg = error_of(c.text);
-    CAPTURE(msg);
-    CHECK(msg.rfind(c.expect, 0) == 0);
-    CHECK(msg.find('\n') == std::string::npos);
-  }
+  figtest::check_spec_errors(cases, "bad.toml");
 }
 
 TEST_CASE("good specs parse, keep document order and take the house defaults") {

@@ -1,5 +1,6 @@
 // Label text: math markup, Unicode in specs, font keys, rotated y labels. Expected runs and
 // characters are written out by hand from the markup rules (docs/spec.md, "Text").
+#include "spec_error_check.hpp"
 #include <catch2/catch.hpp>
 
 #include "figures/src/rich_text.hpp"
@@ -24,15 +25,6 @@ sr::TextExtent fake_measure(const std::string& s, double size, bool) {
   for (unsigned char c : s)
     if ((c & 0xC0) != 0x80) ++n;
   return {n * size, 0.7 * size, 0.2 * size};
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    sf::parse_spec(text, "bad.toml");
-  } catch (const sf::SpecFileError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace
@@ -121,13 +113,7 @@ TEST_CASE("spec text: invalid UTF-8, unknown names and bad font keys name file, 
       {"[axes]\ny_label = \"y\"\ny_label_rotated = \"yes\"\n", "bad.toml:3: axes.y_label_rotated: expected true or false"},
       {"[axes]\nx_label_rotated = true\n", "bad.toml:2: axes.x_label_rotated: unknown key"},
   };
-  for (const auto& c : cases) {
-    INFO(c.text);
-    const std::string msg = error_of(c.text);
-    CAPTURE(msg);
-    CHECK(msg.rfind(c.expect, 0) == 0);
-    CHECK(msg.find('\n') == std::string::npos);
-  }
+  figtest::check_spec_errors(cases, "bad.toml");
   const sf::FigureSpec spec = sf::parse_spec(
       "font_family = \"serif\"\n[[text]]\nat = [1, 2]\ntext = \"a\"\nfont_family = \"mono\"\n[[text]]\nat = [1, 2]\ntext = \"b\"\n",
       "good.toml");
