@@ -136,15 +136,8 @@ Image rasterize(const Scene& scene, int threads) {
   std::vector<std::uint32_t> run_of(items.size());
   {
     auto run_begin = [&](std::size_t r) { return r * items.size() / runs; };
-    // Text and image items first, on this thread, as before: their preparation may call
-    // into libraries that start threads of their own.
-    using Kind = Scene::Item::Kind;
-    auto on_this_thread = [&](std::size_t i) { return items[i].kind == Kind::Text || items[i].kind == Kind::Image; };
     for (std::size_t r = 0; r < runs; ++r)
-      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) {
-        run_of[i] = static_cast<std::uint32_t>(r);
-        if (on_this_thread(i)) prepare(i, prep[i], geoms[r]);
-      }
+      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) run_of[i] = static_cast<std::uint32_t>(r);
     std::atomic<std::size_t> next_run{0};
     std::mutex failure_mutex;
     std::exception_ptr failure;
@@ -154,7 +147,7 @@ Image rasterize(const Scene& scene, int threads) {
           const std::size_t r = next_run.fetch_add(1);
           if (r >= runs) return;
           for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i)
-            if (!on_this_thread(i)) prepare(i, prep[i], geoms[r]);
+            prepare(i, prep[i], geoms[r]);
         }
       } catch (...) {  // rethrown on this thread once every preparer has stopped
         std::lock_guard<std::mutex> lock(failure_mutex);
