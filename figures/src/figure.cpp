@@ -100,7 +100,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   const Layout& L = spec.layout;
   double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
-    Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true};
+    Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
     p.set_origin(spec.title_origin.empty() ? spec.path + ": title" : spec.title_origin);
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;

@@ -40,10 +40,10 @@ struct Guides {
   Color axis = *render::parse_hex_color("#333333");
   Color grid = *render::parse_hex_color("#e6e6e6");
   Color zero = *render::parse_hex_color("#b3b3b3");
-  Font tick_font{12, *render::parse_hex_color("#1a1a1a"), false};
-  Font label_font{13, *render::parse_hex_color("#1a1a1a"), false};
-  Font title_font{14, *render::parse_hex_color("#1a1a1a"), true};
-  Font legend_font{12, *render::parse_hex_color("#1a1a1a"), false};
+  Font tick_font{12, *render::parse_hex_color("#1a1a1a"), false, std::nullopt};
+  Font label_font{13, *render::parse_hex_color("#1a1a1a"), false, std::nullopt};
+  Font title_font{14, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
+  Font legend_font{12, *render::parse_hex_color("#1a1a1a"), false, std::nullopt};
   double tick_length = 5;
 };
 

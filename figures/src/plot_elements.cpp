@@ -133,7 +133,7 @@ class ElementPainter {
 
   // The inline labels, after every element is drawn (so they avoid all the data).
   void place_inline_labels() {
-    Font font{15, {}, false};
+    Font font{15, {}, false, std::nullopt};
     for (auto& il : inline_) {
       font.color = il.color;
       if (il.offset) {

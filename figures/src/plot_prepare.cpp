@@ -42,7 +42,9 @@ PreparedAxes prepare_axes(const AxesSpec& ax) {
 }
 
 void sample_paths(PreparedAxes& prepared, const PixelMap& map, double tolerance) {
-  for (const auto& [index, path] : prepared.paths) {
+  for (const auto& entry : prepared.paths) {
+    const std::size_t index = entry.first;
+    const auto& path = entry.second;
     const auto& origins = prepared.axes.element_origins;
     naming_origin(index < origins.size() ? origins[index] : prepared.axes.where, [&] {
       std::get<SeriesElement>(prepared.axes.elements[index]).points = sample_path(path, map, tolerance);
