@@ -50,7 +50,8 @@ struct Progress : cli::ProgressLine {
 };
 
 // --bits for the output's format: png 8 or 16 (default: 16 for a 16-bit PNG source, else 8);
-// jpg 8; exr float. 32 stands for float.
+// jpg 8; exr float; tif 8, 16 or float (default: float for a float or EXR source, 16 for a 16-bit
+// source, else 8). 32 stands for float.
 int output_bits(const std::string& bits, const std::string& ext, const FileFormat& source) {
   const std::string b = bits.empty() ? "" : bits;
   if (ext == ".exr") {
@@ -61,10 +62,15 @@ int output_bits(const std::string& bits, const std::string& ext, const FileForma
     if (!b.empty() && b != "8") throw Failure("--bits " + b + ": JPEG holds 8 bits");
     return 8;
   }
-  if (b.empty()) return source.name == "png" && source.bits == 16 ? 16 : 8;
+  const bool tiff = ext == ".tif" || ext == ".tiff";
+  if (b.empty()) {
+    if (tiff) return source.name == "openexr" || source.bits == 32 ? 32 : source.bits == 16 ? 16 : 8;
+    return source.name == "png" && source.bits == 16 ? 16 : 8;
+  }
   if (b == "8") return 8;
   if (b == "16") return 16;
-  throw Failure("--bits " + cli::printable(b) + ": PNG holds 8 or 16 bits (float needs .exr)");
+  if (tiff) return 32;  // b == "float"
+  throw Failure("--bits " + cli::printable(b) + ": PNG holds 8 or 16 bits (float needs .exr or .tif)");
 }
 
 // For a format without alpha (JPEG): the image composited over white, its alpha dropped. The
@@ -112,8 +118,8 @@ int run(const Options& o) {
   std::string ext = std::filesystem::path(o.out).extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const bool jpeg = ext == ".jpg" || ext == ".jpeg";
-  if (ext != ".png" && ext != ".exr" && !jpeg)
-    throw Failure("-o " + o.out + ": unsupported output format '" + ext + "' (use .png, .jpg or .exr)");
+  if (ext != ".png" && ext != ".exr" && ext != ".tif" && ext != ".tiff" && !jpeg)
+    throw Failure("-o " + o.out + ": unsupported output format '" + ext + "' (use .png, .jpg, .tif or .exr)");
   if (!o.bits.empty() && o.bits != "8" && o.bits != "16" && o.bits != "float")
     throw Failure("--bits: '" + cli::printable(o.bits) + "' is not 8, 16 or float");
 
@@ -183,7 +189,8 @@ const splinefig::cli::Registration reg{
           ->type_name("NAME")
           ->capture_default_str();
       app.add_option("--bits", o->bits,
-                     "Output bits: .png 8 or 16 (when not given: 16 for a 16-bit PNG input, else 8), .jpg 8, .exr float")
+                     "Output bits: .png 8 or 16 (when not given: 16 for a 16-bit PNG input, else 8), .jpg 8, .exr float, "
+                     ".tif 8, 16 or float (when not given: as the input's)")
           ->type_name("8|16|float");
       app.add_flag("--interpolating", o->interpolating,
                    "Prefilter so that an approximating spline (bspline, tensioned-bspline, beta) "

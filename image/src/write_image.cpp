@@ -76,8 +76,12 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   const std::string ext = lower_extension(path);
   const bool png = ext == ".png";
   const bool jpeg = ext == ".jpg" || ext == ".jpeg";
-  const bool floats = ext == ".exr" || ext == ".tif" || ext == ".tiff";
-  if (!png && !jpeg && !floats) unwritable(path, "unsupported image format '" + ext + "' (use .png, .jpg or .exr)");
+  const bool tiff = ext == ".tif" || ext == ".tiff";
+  const bool floats = ext == ".exr" || (tiff && options.bits == 32);
+  if (!png && !jpeg && !tiff && !floats)
+    unwritable(path, "unsupported image format '" + ext + "' (use .png, .jpg, .tif or .exr)");
+  if (tiff && options.bits != 8 && options.bits != 16 && options.bits != 32)
+    unwritable(path, "TIFF is written with 8 or 16 bits per channel or as float (32), not " + std::to_string(options.bits));
   if (jpeg && options.bits != 8) unwritable(path, "JPEG holds 8 bits per channel, not " + std::to_string(options.bits));
   if (jpeg && im.channels != 1 && im.channels != 3)
     unwritable(path, "JPEG holds 1 or 3 channels (no alpha); this image has " + std::to_string(im.channels));
@@ -127,6 +131,7 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
     // as fast to encode.
     spec.int_attributes.emplace_back("png:compressionLevel", 4);
     spec.int_attributes.emplace_back("png:filter", 8);  // PNG_FILTER_NONE
+    if (tiff) text.emplace_back("compression", "zip");
     if (jpeg) text.emplace_back("Compression", "jpeg:95");
     if (jpeg) text.emplace_back("jpeg:subsampling", "4:4:4");  // no chroma halved at colour edges
     if (options.bits == 16) {

@@ -292,11 +292,23 @@ TEST_CASE("resample: JPEG by the output's extension, alpha composited over white
     CHECK_THAT(r.err, Catch::Contains(says));
     CHECK(!fs::exists(dir / out));
   }
-  for (const char* other : {"x.bmp", "x.tif"}) {
-    const auto r = resample("white.png", other);
-    CHECK(r.code == 2);
-    CHECK_THAT(r.err, Catch::Contains("unsupported output format '" + fs::path(other).extension().string() +
-                                      "' (use .png, .jpg or .exr)"));
+  const auto bmp = resample("white.png", "x.bmp");
+  CHECK(bmp.code == 2);
+  CHECK_THAT(bmp.err, Catch::Contains("unsupported output format '.bmp' (use .png, .jpg, .tif or .exr)"));
+  // TIFF: by default as the input is stored (8 bits from an 8-bit PNG, float from an EXR).
+  REQUIRE(resample("white.png", "white.exr").code == 0);
+  for (const auto& [in, out, bits, says] : std::vector<std::array<std::string, 4>>{
+           {"white.png", "a.tif", "", "8-bit"},
+           {"white.png", "b.tiff", "16", "16-bit"},
+           {"white.exr", "c.tif", "", "float"},
+           {"white.png", "d.tif", "float", "float"}}) {
+    std::vector<std::string> extra{"-v"};
+    if (!bits.empty()) extra.insert(extra.end(), {"--bits", bits});
+    const auto r = resample(in, out, extra);
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK_THAT(r.err, Catch::Contains("60x40 (4 channels, " + says + ","));
+    CHECK(slurp(dir / out).substr(0, 4) == std::string("II*\0", 4));
   }
   fs::remove_all(dir);
 }

@@ -52,7 +52,7 @@ struct FileFormat {
 Image read_image(const std::string& path, ReadMode mode = ReadMode::as_stored, FileFormat* format = nullptr);
 
 struct WriteOptions {
-  int bits = 8;              // integer formats: 8 or 16 (PNG), 8 (JPEG); float formats are float32
+  int bits = 8;              // 8 or 16 (PNG), 8 (JPEG), 8, 16 or 32 = float (TIFF); EXR is float32
   std::string software;      // "splinefig <version>" when empty
   std::string description;   // ImageDescription, e.g. the spec name; none when empty
   double dpi = 0;            // pixels per inch (PNG pHYs, EXR/TIFF XResolution); none when 0
@@ -63,7 +63,9 @@ struct WriteOptions {
 //     images are encoded (8 bits: linear_to_srgb8, exact); sRGB images are stored as they are.
 //     Values are clamped to [0, 1]; NaN is stored as 0.
 //   .jpg, .jpeg: 8 bits, 1 or 3 channels (no alpha), sRGB-encoded as for PNG, quality 95.
-//   .exr (and .tif, .tiff): float32, linear, associated alpha; sRGB images are decoded first.
+//   .tif, .tiff: 8 or 16 bits as for PNG (zip-compressed, unassociated alpha), or with bits = 32
+//     float32 as for EXR.
+//   .exr: float32, linear, associated alpha; sRGB images are decoded first.
 // Throws UnwritableImage (naming the path) for any other extension or any failure.
 void write_image(const std::string& path, const Image& im, const WriteOptions& options = {});
 
