@@ -73,6 +73,9 @@ RelaxedBsplineElement parse_relaxed_bspline(TableReader& r) {
 BezierElement parse_bezier(TableReader& r) {
   BezierElement e;
   e.points = required_points(r, "points", 2, "bezier");
+  // de Casteljau's evaluation costs the square of the count per sample.
+  if (e.points.size() > kMaxBezierPoints)
+    r.fail("points", std::to_string(e.points.size()) + " control points (limit " + std::to_string(kMaxBezierPoints) + ")");
   e.look = parse_series_look(r, LookDefault::Curve);
   return e;
 }

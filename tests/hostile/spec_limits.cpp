@@ -66,3 +66,22 @@ TEST_CASE("arc-length marks on a curve spanning 1e155 end in bounded time with a
   CHECK_THAT(o.err, Catch::Contains("overflows the range of a double"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("a Bezier curve of more than 128 control points is refused, while 128 points and the largest relaxed basis finish") {
+  std::string points;
+  for (int i = 0; i < 129; ++i) points += (i ? ", [" : "[") + std::to_string(i % 10) + ", " + std::to_string(i % 7) + "]";
+  check_refused("bezier", kBox + "[[axes.bezier]]\npoints = [" + points + "]\n",
+                "bezier.toml:5: axes.bezier[0].points: 129 control points (limit 128)");
+  check_refused("relaxed", kBox + "[[axes.relaxed_basis]]\nn = 1001\n", "relaxed.toml:5: axes.relaxed_basis[0].n:");
+  const fs::path dir = scratch();
+  points = points.substr(0, points.rfind(", ["));  // 128 points
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"bezier128", kBox + "[[axes.bezier]]\npoints = [" + points + "]\n"},
+           {"relaxed1000", kBox + "[[axes.relaxed_basis]]\nn = 1000\nk = 500\n"}}) {
+    const Outcome o = render_spec(dir, name, text);
+    INFO(name << ": " << o.err);
+    CHECK_FALSE(o.killed);
+    CHECK(o.code == 0);
+  }
+  fs::remove_all(dir);
+}

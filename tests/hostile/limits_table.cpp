@@ -1,0 +1,62 @@
+// docs/limits.md states the limits the code enforces: each row of its table that has a public
+// constant says that constant's value (the refusal messages are checked by the other cases).
+#include <splinefig/figures/axes.hpp>
+#include <splinefig/figures/spec.hpp>
+#include <splinefig/resample/resample.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace {
+
+// The table's rows: first cell -> second cell.
+std::map<std::string, std::string> limits_table() {
+  std::ifstream f(std::string(SPLINEFIG_SOURCE_DIR) + "/docs/limits.md");
+  REQUIRE(f);
+  std::map<std::string, std::string> rows;
+  for (std::string line; std::getline(f, line);) {
+    if (line.rfind("| ", 0) != 0) continue;
+    const auto a = line.find(" | ", 2);
+    if (a == std::string::npos) continue;
+    const auto b = line.find(" | ", a + 3);
+    rows[line.substr(2, a - 2)] = line.substr(a + 3, b == std::string::npos ? std::string::npos : b - a - 3);
+  }
+  return rows;
+}
+
+std::string power_of_two(long long v) {
+  int k = 0;
+  while ((1LL << k) < v) ++k;
+  return (1LL << k) == v ? "2^" + std::to_string(k) : std::to_string(v);
+}
+
+}  // namespace
+
+TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
+  namespace f = splinefig::figures;
+  const auto rows = limits_table();
+  const std::map<std::string, std::string> expected{
+      {"canvas side, at 1x and after `--scale`", std::to_string(f::kMaxCanvasSide) + " px"},
+      {"canvas pixels, at 1x and after `--scale`", power_of_two(f::kMaxCanvasPixels)},
+      {"spec file size", std::to_string(f::kMaxSpecBytes >> 20) + " MiB"},
+      {"text and title font sizes, at 1x and after `--scale`", std::to_string(int(f::kMaxFontSize)) + " px"},
+      {"ticks per axis (explicit, or from `*_tick_step`)", std::to_string(f::kMaxTicks)},
+      {"`x_marks`, `y_marks`, curve `marks`", std::to_string(f::kMaxMarks)},
+      {"`--threads` (every command) and the resampler's library thread count", std::to_string(splinefig::kMaxResampleThreads)},
+      {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},
+  };
+  for (const auto& [quantity, limit] : expected) {
+    INFO(quantity);
+    REQUIRE(rows.count(quantity) == 1);
+    CHECK(rows.at(quantity) == limit);
+  }
+  // The span row names both minima.
+  REQUIRE(rows.count("axis range span") == 1);
+  std::ostringstream span;
+  span << "finite, >= " << f::kMinAxisSpan << " and >= " << f::kMinRelativeAxisSpan << " of the larger end";
+  CHECK(rows.at("axis range span") == span.str());
+}
