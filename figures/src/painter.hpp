@@ -7,8 +7,10 @@
 #include <cstdint>
 #include <map>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -93,14 +95,23 @@ class Painter {
   mutable std::map<std::tuple<std::string, double, bool, int>, render::TextExtent> cache_;
 };
 
+// An error about one key of the table being drawn (e.g. an axes table's x_range).
+struct KeyError : std::invalid_argument {
+  KeyError(std::string k, const std::string& what) : std::invalid_argument(what), key(std::move(k)) {}
+  std::string key;
+};
+
 // Runs f(); an error it throws other than SpecFileError becomes a SpecFileError
-// "ORIGIN: what" (one line), `origin` being "FILE:LINE: KEY" of the spec table being drawn.
+// "ORIGIN: what" (one line), `origin` being "FILE:LINE: KEY" of the spec table being drawn; a
+// KeyError becomes "ORIGIN.KEY: what".
 template <class F>
 void naming_origin(const std::string& origin, F&& f) {
   try {
     f();
   } catch (const SpecFileError&) {
     throw;
+  } catch (const KeyError& e) {
+    throw SpecFileError(origin.empty() ? e.key + ": " + e.what() : origin + "." + e.key + ": " + e.what());
   } catch (const std::bad_alloc&) {
     throw SpecFileError(origin + ": out of memory");
   } catch (const std::exception& e) {

@@ -99,7 +99,7 @@ std::vector<Tick> make_ticks(const AxisSpec& axis, char name, const std::array<d
   try {
     ticks = nice_ticks(range[0], range[1], target, axis.tick_step.value_or(0));
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string(1, name) + (axis.tick_step ? "_tick_step: " : "_range: ") + e.what());
+    throw KeyError(std::string(1, name) + (axis.tick_step ? "_tick_step" : "_range"), e.what());
   }
   if (axis.scale == Scale::Decibel)
     for (auto& t : ticks) t.label += " dB";
@@ -172,7 +172,7 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
   auto check_range = [](const AxisSpec& axis, char name, const std::array<double, 2>& r) {
     const std::string why = range_problem(r[0], r[1]);
     if (!why.empty())
-      throw std::invalid_argument(std::string(1, name) + "_range: " + why + (axis.range ? "" : " (from the data)"));
+      throw KeyError(std::string(1, name) + "_range", why + (axis.range ? "" : " (from the data)"));
   };
   for (int pass = 0; pass < 3; ++pass) {
     xr = xr0, yr = yr0;

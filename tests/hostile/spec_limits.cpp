@@ -27,14 +27,14 @@ TEST_CASE("axis ranges of +-1e308, denormal and too narrow ranges are refused na
   check_refused("narrow", "[axes]\nx_range = [1, 1.0000000000000002]\ny_range = [0, 1]\n",
                 "narrow.toml:2: axes.x_range: the range [1, 1.0000000000000002] is too narrow");
   check_refused("data_wide", "[axes]\n[[axes.series]]\npoints = [[-1e308, 0], [1e308, 1]]\n",
-                "data_wide.toml:1: axes: x_range: the range [-inf, inf] is not finite (from the data)");
+                "data_wide.toml:1: axes.x_range: the range [-inf, inf] is not finite (from the data)");
 }
 
 TEST_CASE("a tick step giving more than 1000 ticks is refused, with a given range or one from the data") {
   check_refused("step", "[axes]\nx_range = [0, 1]\nx_tick_step = 1e-300\n",
                 "step.toml:3: axes.x_tick_step: gives more than 1000 ticks over the x_range");
   check_refused("step_data", "[axes]\ny_tick_step = 1e-300\n[[axes.series]]\npoints = [[0, 1e20], [1, 1e21]]\n",
-                "step_data.toml:1: axes: y_tick_step: a tick step of 1e-300 gives more than 1000 ticks");
+                "step_data.toml:1: axes.y_tick_step: a tick step of 1e-300 gives more than 1000 ticks");
 }
 
 TEST_CASE("a log axis with non-positive points is an error naming the element") {
