@@ -3,34 +3,20 @@
 // definition; the tests look for the curve's pixels where those say it must be.
 #include <catch2/catch.hpp>
 
-#include <splinefig/figures/figure.hpp>
+#include "ink.hpp"
 
-#include <cmath>
 #include <string>
 
-using namespace splinefig;
-using namespace splinefig::figures;
+using figtest::ink_near;
+using splinefig::figures::RenderedFigure;
 
 namespace {
 
 // One black filter curve, 2 px wide, on an axes without zero line, frame, ticks or legend.
 RenderedFigure filter_figure(const std::string& filter, const std::string& range_key) {
-  FigureSpec spec = parse_spec("[canvas]\nwidth = 400\nheight = 300\n[axes]\nx_range = [-2.5, 2.5]\n"
-                               "y_range = [-0.5, 1.5]\nframe = \"none\"\nlegend = \"none\"\n"
-                               "[[axes.filter]]\nfilter = \"" + filter + "\"\ncolor = \"#000000\"\n" + range_key,
-                               "filter.toml");
-  spec.show_title = false;
-  return render_figure(spec, {1, 1});
-}
-
-// The darkest ink (1 - green, linear) within 2 px of data (x, y).
-double ink_near(const RenderedFigure& f, double x, double y) {
-  const AxesInfo& a = f.info.axes.at(0);
-  const int px = static_cast<int>(std::floor(a.x_map().to_pixel(x))), py = static_cast<int>(std::floor(a.y_map().to_pixel(y)));
-  double best = 0;
-  for (int dy = -2; dy <= 2; ++dy)
-    for (int dx = -2; dx <= 2; ++dx) best = std::max(best, 1.0 - f.image.pixel(px + dx, py + dy)[1]);
-  return best;
+  return figtest::render_text_spec("[canvas]\nwidth = 400\nheight = 300\n[axes]\nx_range = [-2.5, 2.5]\n"
+                                   "y_range = [-0.5, 1.5]\nframe = \"none\"\nlegend = \"none\"\n"
+                                   "[[axes.filter]]\nfilter = \"" + filter + "\"\ncolor = \"#000000\"\n" + range_key);
 }
 
 }  // namespace
