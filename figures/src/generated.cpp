@@ -39,6 +39,7 @@ void append_unique(std::vector<Vec2>& out, Vec2 q) {
 
 std::vector<Vec2> rough_points(const Path& p) {
   std::vector<Vec2> out;
+  if (p.before && !p.breaks.empty()) out.push_back(p.before(p.breaks.front()));
   for (size_t i = 0; i + 1 < p.breaks.size(); ++i) {
     const double a = p.breaks[i], b = p.breaks[i + 1];
     for (int j = 0; j < 32; ++j) out.push_back(p.at(a + (b - a) * j / 32));
@@ -50,6 +51,13 @@ std::vector<Vec2> rough_points(const Path& p) {
 
 std::vector<Vec2> sample_path(const Path& p, const PixelMap& map, double tolerance) {
   std::vector<Vec2> out;
+  // The limit from the left at the first break, when the path starts at a jump (the box's
+  // left edge on its support), so the jump is drawn upright as at every other break.
+  if (p.before && !p.breaks.empty()) {
+    const Vec2 l = p.before(p.breaks.front()), r = p.at(p.breaks.front());
+    const Vec2 pl = map(l), pr = map(r);
+    if (std::hypot(pl.x - pr.x, pl.y - pr.y) > tolerance) out.push_back(l);
+  }
   for (size_t i = 0; i + 1 < p.breaks.size(); ++i) {
     const double a = p.breaks[i], b = p.breaks[i + 1];
     append_unique(out, p.at(a));

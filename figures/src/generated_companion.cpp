@@ -94,15 +94,17 @@ std::vector<GeneratedPart> parts_of(const RelaxedBsplineElement& e) {
   if (e.show == Show::Bezier) return {points(pts, e.look)};
   // One A per interior joint: the legs from the outer division points up to the apex B_i,
   // and the cross-bar between the inner division points, through S_i (seed 003 §3-4). One
-  // legend entry for all of them.
+  // legend entry for all of them; `aframe` keeps only the one at B_aframe.
   std::vector<GeneratedPart> out;
   SeriesLook unlabelled = e.look;
   unlabelled.label = {};
   const std::size_t n = B.size() - 1;
-  for (std::size_t i = 1; i < n; ++i) {
+  const std::size_t first = e.aframe > 0 ? static_cast<std::size_t>(e.aframe) : 1;
+  const std::size_t last = e.aframe > 0 ? first + 1 : n;
+  for (std::size_t i = first; i < last; ++i) {
     const Vec2 P1 = pts[3 * i - 2], P2 = pts[3 * i - 1], Q1 = pts[3 * i + 1], Q2 = pts[3 * i + 2];
     const Vec2 A{B[i][0], B[i][1]};
-    out.push_back(points({P1, A, Q2}, i == 1 ? e.look : unlabelled));
+    out.push_back(points({P1, A, Q2}, i == first ? e.look : unlabelled));
     out.push_back(points({P2, Q1}, unlabelled));
   }
   return out;

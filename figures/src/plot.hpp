@@ -51,6 +51,7 @@ struct Panel {
   Rect box;
   PixelMap map;
   std::vector<Tick> x_ticks, y_ticks;
+  std::vector<double> x_minor, y_minor;  // unlabelled: 2..9 times each decade of a log axis
   std::array<double, 2> x_range{}, y_range{};
 };
 

@@ -63,6 +63,16 @@ void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter
       p.stroke({{b.left - 1, y}, {b.left - 1 - g.tick_length, y}}, false, hairline(), g.axis);
       p.text(tick.label, {b.left - 1 - g.tick_length - 4, y}, tf, {render::HAlign::Right, render::VAlign::Middle});
     }
+    // Minor ticks: three fifths as long, no label.
+    const double minor = 0.6 * g.tick_length;
+    for (double v : panel.x_minor) {
+      const double x = panel.map.x.to_pixel(v);
+      p.stroke({{x, b.bottom + 1}, {x, b.bottom + 1 + minor}}, false, hairline(), g.axis);
+    }
+    for (double v : panel.y_minor) {
+      const double y = panel.map.y.to_pixel(v);
+      p.stroke({{b.left - 1, y}, {b.left - 1 - minor, y}}, false, hairline(), g.axis);
+    }
     for (double m : ax.x.marks) {
       double x = panel.map.x.to_pixel(m);
       if (x < b.left - 0.5 || x > b.right + 0.5) continue;

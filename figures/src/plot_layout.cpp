@@ -72,6 +72,22 @@ std::array<double, 2> auto_range(const AxisSpec& axis, std::array<double, 2> b, 
   return {b[0] - 0.05 * span, b[1] + 0.05 * span};
 }
 
+// Minor ticks of a log axis whose ticks are every decade (not given, not thinned out, not the
+// nice ticks of a range under one decade): 2, 3, ..., 9 times each power of ten in the range.
+std::vector<double> log_minor_ticks(const AxisSpec& axis, const std::vector<Tick>& majors, const AxisMap& m) {
+  if (axis.scale != Scale::Log || axis.ticks || majors.size() < 2) return {};
+  for (size_t i = 0; i + 1 < majors.size(); ++i)
+    if (std::abs(std::log10(majors[i + 1].value / majors[i].value) - 1) > 1e-9) return {};
+  const double lo = std::min(m.d0, m.d1), hi = std::max(m.d0, m.d1);
+  std::vector<double> minor;
+  for (int k = static_cast<int>(std::floor(std::log10(lo))); k <= static_cast<int>(std::ceil(std::log10(hi))); ++k)
+    for (int f = 2; f <= 9; ++f) {
+      const double v = f * std::pow(10.0, k);
+      if (v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12)) minor.push_back(v);
+    }
+  return minor;
+}
+
 std::vector<Tick> make_ticks(const AxisSpec& axis, char name, const std::array<double, 2>& range, double pixels,
                              double spacing) {
   if (axis.ticks) {
@@ -208,6 +224,8 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
   };
   std::erase_if(panel.x_ticks, [&](const Tick& t) { return !inside(panel.map.x, t, box.left, box.right); });
   std::erase_if(panel.y_ticks, [&](const Tick& t) { return !inside(panel.map.y, t, box.top, box.bottom); });
+  panel.x_minor = log_minor_ticks(ax.x, panel.x_ticks, panel.map.x);
+  panel.y_minor = log_minor_ticks(ax.y, panel.y_ticks, panel.map.y);
   return panel;
 }
 

@@ -3,6 +3,20 @@
 
 namespace splinefig::figures::detail {
 
+namespace {
+
+// A filter curve without a range of its own spans the axes' x range when that is given (zero
+// outside the support, like the function it is); otherwise its support.
+PlotElement over_axis(const PlotElement& e, const AxesSpec& ax) {
+  const auto* f = std::get_if<FilterCurveElement>(&e);
+  if (!f || f->range || !ax.x.range) return e;
+  FilterCurveElement spanning = *f;
+  spanning.range = ax.x.range;
+  return spanning;
+}
+
+}  // namespace
+
 PreparedAxes prepare_axes(const AxesSpec& ax) {
   PreparedAxes out;
   out.axes = ax;
@@ -23,7 +37,7 @@ PreparedAxes prepare_axes(const AxesSpec& ax) {
         elements.push_back(e);
         return;
       }
-      for (GeneratedPart& part : generate(e)) {
+      for (GeneratedPart& part : generate(over_axis(e, ax))) {
         if (auto* g = std::get_if<GeneratedSeries>(&part)) {
           out.generated.emplace_back(elements.size(), origin);
           if (g->path) {

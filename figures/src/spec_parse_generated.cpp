@@ -65,6 +65,10 @@ RelaxedBsplineElement parse_relaxed_bspline(TableReader& r) {
       r.choice("show", {"curve", "joints", "division", "bezier", "aframes"}, 0));
   if (e.show == RelaxedBsplineElement::Show::AFrames && e.points.size() < 3)
     r.fail("points", "A-frames need at least 3 control points");
+  if (r.has("aframe")) {
+    if (e.show != RelaxedBsplineElement::Show::AFrames) r.fail("aframe", "needs show = \"aframes\"");
+    e.aframe = r.integer("aframe", 0, 1, static_cast<int>(e.points.size()) - 2);
+  }
   const bool line = e.show == RelaxedBsplineElement::Show::Curve || e.show == RelaxedBsplineElement::Show::AFrames;
   e.look = parse_series_look(r, line ? LookDefault::Curve : LookDefault::Points);
   return e;

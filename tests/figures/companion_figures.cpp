@@ -85,8 +85,8 @@ TEST_CASE("companion figures show their documented checks") {
     const Rendered f = render("s002-fig474");
     // Step 1 of (0,0),(1,2),(3,2),(4,0): vertex points (P0 + 6P1 + P2)/8 = (1.125, 1.75) and
     // (P1 + 6P2 + P3)/8 = (2.875, 1.75).
-    CHECK(on(f, 1.125, 1.75, "#ff7f0e"));
-    CHECK(on(f, 2.875, 1.75, "#ff7f0e"));
+    CHECK(on(f, 1.125, 1.75, "#8c564b"));
+    CHECK(on(f, 2.875, 1.75, "#8c564b"));
     // Limits: P(0) = (P0 + 4P1 + P2)/6 = (7/6, 5/3) and the segment's midpoint
     // (P0 + 23P1 + 23P2 + P3)/48 = (96/48, 92/48).
     CHECK(on(f, 7.0 / 6, 5.0 / 3, "#d62728"));

@@ -123,12 +123,25 @@ TEST_CASE("tension: each Beta-spline passes its knot-junction point in its own c
   // d = b2 + 2 b1^3 + 4 b1^2 + 4 b1 + 2. At P_1 = (1, 2) between (0, 0) and (2, 0), b1 = 1:
   // x = 1, y = 2 (b2 + 8) / (b2 + 12): b2 = 0 -> 4/3, 10 -> 18/11, 50 -> 58/31.
   const std::pair<double, const char*> curves[] = {
-      {4.0 / 3, "$b_2$ = 0 (B-spline)"}, {18.0 / 11, "$b_2$ = 10"}, {58.0 / 31, "$b_2$ = 50"}};
+      {4.0 / 3, "$b_1$ = 1, $b_2$ = 0 (B-spline)"}, {18.0 / 11, "$b_1$ = 1, $b_2$ = 10"}, {58.0 / 31, "$b_1$ = 1, $b_2$ = 50"}};
   for (auto [y, label] : curves) {
     INFO(label);
     CHECK(best_share(png, m.px(1), m.py(y), series_color(axes, label), 0) > 0.5);
     CHECK(best_share(png, m.px(5), m.py(y), series_color(axes, label), 0) > 0.5);  // and at P_5 = (5, 2)
   }
+}
+
+TEST_CASE("bias: the B-spline (b1 = 1) is visible where it starts, a sixth along the first leg") {
+  auto dir = render_builtin("bias", {"bias"});
+  Json index = parse_json(read_file(dir / "index.json"));
+  const Json& axes = figure(index, "bias")["axes"][0];
+  Png png = load_png(dir / "bias.png");
+  AxesMap m(axes);
+  // Doubled end knots: the first junction is (5 B_0 + B_1) / 6 = (1/6, 1/3) for b1 = 1, b2 = 0
+  // (the memo's B-spline matrix), on the polygon's first leg, where the b1 = 5 curve runs too
+  // (it starts at 0.005 of the leg). The dashed curve begins with a dash there.
+  const Rgb grey = series_color(axes, "$b_1$ = 1 (B-spline)");
+  CHECK(best_share(png, m.px(1.0 / 6), m.py(1.0 / 3), grey, 1) > 0.8);
 }
 
 TEST_CASE("multiplicity: the B-spline reaches a triple knot, Catmull-Rom passes every knot") {

@@ -14,7 +14,9 @@ using namespace splinefig::figures;
 
 namespace {
 
-// The bias figure with only the Beta-spline of bias b1, drawn black, no polygon, no legend.
+// The bias figure with only the Beta-spline of bias b1, drawn black and solid (the figure
+// dashes the B-spline; a dash pattern runs along the curve, so it has no mirror image), no
+// polygon, no legend.
 RenderedFigure bias_curve_alone(const std::string& basis) {
   FigureSpec spec = load_spec(std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/bias.toml");
   spec.show_title = false;
@@ -26,6 +28,7 @@ RenderedFigure bias_curve_alone(const std::string& basis) {
     for (auto& e : ax->elements)
       if (auto* c = std::get_if<CurveElement>(&e); c && c->basis_spec == basis) {
         c->color = Color{0, 0, 0, 1};
+        c->stroke.dashes.clear();
         kept.push_back(*c);
       }
     REQUIRE(kept.size() == 1);

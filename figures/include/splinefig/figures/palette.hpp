@@ -8,8 +8,9 @@
 namespace splinefig::figures {
 
 bool palette_known(std::string_view name);
-// Colour i of n from a palette: "viridis" (perceptually ordered; sampled on [0, 0.9] so the
-// last colour is not the pale yellow end), "tab10" (categorical), "grey".
+// Colour i of n from a palette: "viridis" (perceptually ordered; sampled on [0, 0.58], where
+// every colour has at least 3:1 contrast on white), "tab10" (matplotlib's categorical set as
+// it is: four of its colours are under 3:1 on white), "grey" (sRGB 0.15 .. 0.55, also >= 3:1).
 render::Color palette_color(std::string_view name, int i, int n);
 // Viridis at t in [0, 1], interpolated in sRGB between published samples.
 render::Color viridis(double t);

@@ -247,6 +247,7 @@ struct RelaxedBsplineElement {  // [[axes.relaxed_bspline]]
   enum class Show { Curve, Joints, Division, Bezier, AFrames };
   std::vector<Vec2> points;
   Show show = Show::Curve;
+  int aframe = 0;  // show = aframes: only the A-frame with apex B_aframe (1 .. n-1); 0: all
   SeriesLook look;
 };
 
