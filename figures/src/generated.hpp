@@ -22,6 +22,7 @@ struct Path {
   std::function<Vec2(double)> before;  // the limit from the left at t; empty: no jumps
   std::vector<double> breaks;          // ascending, at least two
   bool closed = false;                 // ends where it starts (the last point is the first)
+  std::vector<Vec2> bezier;            // a cubic spline: its Bezier control points (3n + 1), else empty
 };
 
 // A generated series: its points, or the path its points are sampled from.

@@ -48,6 +48,7 @@ Path bezier_path(BezierSpline b) {
     evaluate(*s, t, 0, x);
     return Vec2{x[0], x[1]};
   };
+  if (s->points.dim == 2) p.bezier = to_vec(s->points);
   return p;
 }
 
@@ -119,6 +120,12 @@ std::vector<GeneratedPart> parts_of(const BezierElement& e) {
     de_casteljau(*P, t, x);
     return Vec2{x[0], x[1]};
   };
+  // Up to degree 3 the curve is one cubic (degree elevation is exact).
+  const std::vector<Vec2>& c = e.points;
+  auto lerp = [](Vec2 a, Vec2 b, double t) { return Vec2{a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t}; };
+  if (c.size() == 2) p.bezier = {c[0], lerp(c[0], c[1], 1.0 / 3), lerp(c[0], c[1], 2.0 / 3), c[1]};
+  if (c.size() == 3) p.bezier = {c[0], lerp(c[0], c[1], 2.0 / 3), lerp(c[2], c[1], 2.0 / 3), c[2]};
+  if (c.size() == 4) p.bezier = c;
   return {traced(std::move(p), e.look)};
 }
 

@@ -248,7 +248,14 @@ void draw_series(const SeriesElement& s, ElementPainter& d) {
   for (Vec2 q : s.points) pts.push_back(d.map(q));
   const bool line = look.mode == SeriesMode::Line || look.mode == SeriesMode::LineMarkers;
   const bool marks = look.mode == SeriesMode::Markers || look.mode == SeriesMode::LineMarkers || look.mode == SeriesMode::Stems;
-  if (line) {
+  if (line && !s.bezier.empty() && d.map.x.scale == Scale::Linear && d.map.y.scale == Scale::Linear) {
+    // A cubic spline: its Bezier pieces mapped to pixels (an affine map keeps them exact).
+    render::Path path;
+    path.move_to(d.map(s.bezier[0]));
+    for (std::size_t i = 1; i + 2 < s.bezier.size(); i += 3)
+      path.cubic_to(d.map(s.bezier[i]), d.map(s.bezier[i + 1]), d.map(s.bezier[i + 2]));
+    d.stroke(path, pts, look.closed, look.stroke, color);
+  } else if (line) {
     d.stroke(pts, look.closed, look.stroke, color);
   } else if (look.mode == SeriesMode::Steps) {
     std::vector<Vec2> steps;

@@ -146,3 +146,20 @@ TEST_CASE("write_vector names the file it cannot write and accepts only .svg and
   CHECK(splinefig::vector::is_vector_file("A.SVG"));
   CHECK_FALSE(splinefig::vector::is_vector_file("a.png"));
 }
+
+TEST_CASE("generated splines in SVG: an interpolating spline, relaxed B-splines and cubic Bezier curves are their pieces") {
+  // The cubic pieces of each curve, in drawing order (paths without a C are axes, ticks and
+  // the polygons, which are polylines of their own).
+  auto cubic_counts = [](const std::string& name) {
+    std::vector<int> counts;
+    for (const PathCounts& p : stroked_paths(svg_of(name)))
+      if (p.cubics > 0) {
+        CHECK(p.lines == 0);
+        counts.push_back(p.cubics);
+      }
+    return counts;
+  };
+  CHECK(cubic_counts("s003-fig02") == std::vector<int>{10});    // 11 data points: 10 pieces
+  CHECK(cubic_counts("s003-fig12") == std::vector<int>{6, 6});  // 7 control points each: 6 pieces
+  CHECK(cubic_counts("s003-fig05") == std::vector<int>{1, 1});  // two cubic Bezier curves
+}

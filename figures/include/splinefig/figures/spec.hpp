@@ -176,6 +176,10 @@ struct SeriesLook {
 struct SeriesElement {
   std::vector<Vec2> points;
   SeriesLook look;
+  // A generated curve that is a cubic spline: its Bezier control points in data space (3n + 1,
+  // the curve itself), drawn exactly on linear axes where it fits the axes box; `points` is its
+  // polyline. Empty for other series.
+  std::vector<Vec2> bezier = {};
 };
 
 // A filled area: between y and y2 (or a baseline) over x, or a polygon in data space.
