@@ -60,26 +60,4 @@ void StripSweep::add_steps(std::size_t c0, std::size_t c1, double y0, double y1)
   steps_.resize(m);
 }
 
-void StripSweep::push_event(double y, std::uint32_t type, std::uint32_t a, std::uint32_t b) {
-  heap_.push_back({y, type, a, b, nodes_[a].ver, type == kCross ? nodes_[b].ver : 0});
-  std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
-}
-
-// Schedules the crossing of the neighbours ord_[p] (left) and ord_[p + 1] at or after y, if
-// they converge and meet before either's current edge ends (else the vertex or end event there
-// checks them again). A pair found out of order while converging swaps at once; a diverging
-// pair never swaps, so no two spans swap back and forth at one height.
-void StripSweep::check_pair(std::size_t p, double y) {
-  if (p + 1 >= ord_.size()) return;
-  const std::uint32_t a = ord_[p], b = ord_[p + 1];
-  const Node &A = nodes_[a], &B = nodes_[b];
-  const double rel = A.slope - B.slope;
-  if (!(rel > 0)) return;
-  double yc = y + (B.x(y) - A.x(y)) / rel;
-  if (!(yc >= y)) yc = y;
-  const double lim = std::min(std::min(A.ny, B.ny), std::min(A.tb, B.tb));
-  if (!(yc < lim)) return;
-  push_event(yc, kCross, a, b);
-}
-
 }  // namespace splinefig::render::detail

@@ -140,11 +140,7 @@ class StripSweep {
   struct Event {
     double y;
     std::uint32_t type, a, b, va, vb;
-    bool operator>(const Event& o) const {
-      if (y != o.y) return y > o.y;
-      if (type != o.type) return type > o.type;
-      return a != o.a ? a > o.a : b > o.b;
-    }
+    bool operator>(const Event& o) const { return y > o.y || (y == o.y && type > o.type); }
   };
   static constexpr std::uint32_t kNone = ~std::uint32_t{0};
   std::vector<Node> nodes_;
@@ -364,6 +360,28 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
     const Node& N = nodes_[id];
     if (N.sign != 0) emit(spans_[byx_[c0 + id]], N.open_y, std::min(N.tb, y1), N.sign, sink);
   }
+}
+
+inline void StripSweep::push_event(double y, std::uint32_t type, std::uint32_t a, std::uint32_t b) {
+  heap_.push_back({y, type, a, b, nodes_[a].ver, type == kCross ? nodes_[b].ver : 0});
+  std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+}
+
+// Schedules the crossing of the neighbours ord_[p] (left) and ord_[p + 1] at or after y, if
+// they converge and meet before either's current edge ends (else the vertex or end event there
+// checks them again). A pair found out of order while converging swaps at once; a diverging
+// pair never swaps, so no two spans swap back and forth at one height.
+inline void StripSweep::check_pair(std::size_t p, double y) {
+  if (p + 1 >= ord_.size()) return;
+  const std::uint32_t a = ord_[p], b = ord_[p + 1];
+  const Node &A = nodes_[a], &B = nodes_[b];
+  const double rel = A.slope - B.slope;
+  if (!(rel > 0)) return;
+  double yc = y + (B.x(y) - A.x(y)) / rel;
+  if (!(yc >= y)) yc = y;
+  const double lim = std::min(std::min(A.ny, B.ny), std::min(A.tb, B.tb));
+  if (!(yc < lim)) return;
+  push_event(yc, kCross, a, b);
 }
 
 // The boundary status of node id from the winding on its left and its own (on its right);
