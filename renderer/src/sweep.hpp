@@ -102,7 +102,7 @@ class StripSweep {
   template <class Sink>
   void rewalk(std::size_t lo, std::size_t hi, double y, Sink& sink);
   void check_pair(std::size_t p, double y);
-  void push_event(double y, std::uint32_t type, std::uint32_t a, std::uint32_t b = 0);
+  void push_event(double y, std::uint32_t type, std::uint32_t node, std::uint32_t stamp = 0);
   bool inside(int w) const { return s_->rule == FillRule::EvenOdd ? (w & 1) != 0 : w != 0; }
 
   const Geometry* g_ = nullptr;
@@ -125,7 +125,7 @@ class StripSweep {
     double open_y;                 // where the current boundary status began
     std::size_t k, last;
     int dir, sign, w;              // w: the winding right of the span
-    std::uint32_t ver;             // changes with the edge and on removal: stale events are dropped
+    std::uint32_t stamp;           // counts the checks of the pair with its right neighbour
     double x(double y) const { return ax + (y - ay) * slope; }
     void load(const std::vector<Vec2>& v, std::size_t edge) {
       k = edge;
@@ -137,10 +137,16 @@ class StripSweep {
     }
   };
   enum : std::uint32_t { kEnd = 0, kStart = 1, kVertex = 2, kCross = 3 };
+  // An event: its height, its kind (top two bits of key) and node (the rest: a strip never holds
+  // 2^30 spans, their records alone would take 48 GB); a crossing
+  // is of the node and its right neighbour, valid while the node's stamp is unchanged (every
+  // change of either's edge or of the pair bumps it).
   struct Event {
     double y;
-    std::uint32_t type, a, b, va, vb;
-    bool operator>(const Event& o) const { return y > o.y || (y == o.y && type > o.type); }
+    std::uint32_t key, stamp;
+    std::uint32_t type() const { return key >> 30; }
+    std::uint32_t node() const { return key & ((1u << 30) - 1); }
+    bool operator>(const Event& o) const { return y > o.y || (y == o.y && type() > o.type()); }
   };
   static constexpr std::uint32_t kNone = ~std::uint32_t{0};
   std::vector<Node> nodes_;
@@ -252,7 +258,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
     N.dir = s.dir;
     N.sign = 0;
     N.w = 0;
-    N.ver = 0;
+    N.stamp = 0;
     N.open_y = s.ta;
     if (s.ta > y0) {
       push_event(s.ta, kStart, i);
@@ -286,11 +292,12 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
     std::pop_heap(heap_.begin(), heap_.end(), greater);
     heap_.pop_back();
     const double y = e.y;
-    if (e.type == kCross) {
-      const std::uint32_t a = e.a, b = e.b;
-      Node &A = nodes_[a], &B = nodes_[b];
-      if (A.ver != e.va || B.ver != e.vb || pos_[a] == kNone || pos_[b] != pos_[a] + 1) continue;
+    if (e.type() == kCross) {
+      const std::uint32_t a = e.node();
+      if (pos_[a] == kNone || nodes_[a].stamp != e.stamp || pos_[a] + 1 >= ord_.size()) continue;
       const std::size_t p = pos_[a];
+      const std::uint32_t b = ord_[p + 1];
+      Node &A = nodes_[a], &B = nodes_[b];
       ord_[p] = b;
       ord_[p + 1] = a;
       pos_[b] = static_cast<std::uint32_t>(p);
@@ -301,13 +308,14 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
       A.w = B.w + A.dir;
       set_status(a, B.w, y, sink);
       if (p > 0) check_pair(p - 1, y);
+      check_pair(p, y);
       check_pair(p + 1, y);
-    } else if (e.type == kVertex) {
-      Node& N = nodes_[e.a];
+    } else if (e.type() == kVertex) {
+      const std::uint32_t id = e.node();
+      Node& N = nodes_[id];
       N.load(v, N.k + 1);
-      ++N.ver;
-      if (N.ny < N.tb) push_event(N.ny, kVertex, e.a);
-      const std::size_t p = pos_[e.a];
+      if (N.ny < N.tb) push_event(N.ny, kVertex, id);
+      const std::size_t p = pos_[id];
       if (p > 0) check_pair(p - 1, y);
       check_pair(p, y);
     } else {
@@ -315,15 +323,14 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
       // stretch they touched [lo, hi] and on until the windings agree with the old ones.
       std::size_t lo = ord_.size(), hi = 0;
       for (Event f = e;;) {
-        const std::uint32_t id = f.a;
+        const std::uint32_t id = f.node();
         Node& N = nodes_[id];
-        if (f.type == kEnd) {
+        if (f.type() == kEnd) {
           const std::size_t p = pos_[id];
           if (N.sign != 0) emit(spans_[byx_[c0 + id]], N.open_y, y, N.sign, sink);
           ord_.erase(ord_.begin() + static_cast<std::ptrdiff_t>(p));
           for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
           pos_[id] = kNone;
-          ++N.ver;
           lo = std::min(lo, p);
           if (p < hi) --hi;
           hi = std::max(hi, p);
@@ -346,14 +353,14 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
           lo = std::min(lo, p);
           hi = std::max(hi, p);
         }
-        if (heap_.empty() || heap_.front().y != y || heap_.front().type > kStart) break;
+        if (heap_.empty() || heap_.front().y != y || heap_.front().type() > kStart) break;
         f = heap_.front();
         std::pop_heap(heap_.begin(), heap_.end(), greater);
         heap_.pop_back();
       }
       if (lo > hi) continue;
       rewalk(lo, hi, y, sink);
-      for (std::size_t p = lo > 0 ? lo - 1 : 0; p <= hi && p + 1 < ord_.size(); ++p) check_pair(p, y);
+      for (std::size_t p = lo > 0 ? lo - 1 : 0; p <= hi && p < ord_.size(); ++p) check_pair(p, y);
     }
   }
   for (const std::uint32_t id : ord_) {
@@ -362,26 +369,30 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
   }
 }
 
-inline void StripSweep::push_event(double y, std::uint32_t type, std::uint32_t a, std::uint32_t b) {
-  heap_.push_back({y, type, a, b, nodes_[a].ver, type == kCross ? nodes_[b].ver : 0});
+inline void StripSweep::push_event(double y, std::uint32_t type, std::uint32_t node, std::uint32_t stamp) {
+  heap_.push_back({y, type << 30 | node, stamp});
   std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
 }
 
 // Schedules the crossing of the neighbours ord_[p] (left) and ord_[p + 1] at or after y, if
 // they converge and meet before either's current edge ends (else the vertex or end event there
-// checks them again). A pair found out of order while converging swaps at once; a diverging
-// pair never swaps, so no two spans swap back and forth at one height.
+// checks them again); any crossing scheduled for ord_[p] before is void from now on. A pair
+// found out of order while converging swaps at once; a diverging pair never swaps, so no two
+// spans swap back and forth at one height.
 inline void StripSweep::check_pair(std::size_t p, double y) {
+  if (p >= ord_.size()) return;
+  const std::uint32_t a = ord_[p];
+  Node& A = nodes_[a];
+  ++A.stamp;
   if (p + 1 >= ord_.size()) return;
-  const std::uint32_t a = ord_[p], b = ord_[p + 1];
-  const Node &A = nodes_[a], &B = nodes_[b];
+  const Node& B = nodes_[ord_[p + 1]];
   const double rel = A.slope - B.slope;
   if (!(rel > 0)) return;
   double yc = y + (B.x(y) - A.x(y)) / rel;
   if (!(yc >= y)) yc = y;
   const double lim = std::min(std::min(A.ny, B.ny), std::min(A.tb, B.tb));
   if (!(yc < lim)) return;
-  push_event(yc, kCross, a, b);
+  push_event(yc, kCross, a, A.stamp);
 }
 
 // The boundary status of node id from the winding on its left and its own (on its right);
