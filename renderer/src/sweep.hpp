@@ -117,9 +117,9 @@ class StripSweep {
   int base_ = 0;                     // winding left of the current cluster at the strip's top
   std::vector<std::pair<double, std::uint32_t>> pending_;  // the spans by xmin
 
-  // The sweep of a cluster: the cluster's spans (by their index in the cluster),
-  // their left-to-right order at the current height and each one's place in it, and the events
-  // still to come, a min-heap by (y, type).
+  // The sweep of a cluster: its spans (by their index in the cluster), their left-to-right order
+  // at the current height and each one's place in it, and the events still to come, a min-heap
+  // by (y, kind).
   struct Node {
     double ax, ay, slope, ny, tb;  // current edge: x = ax + (y - ay) slope up to ny; span ends at tb
     double open_y;                 // where the current boundary status began
@@ -138,9 +138,9 @@ class StripSweep {
   };
   enum : std::uint32_t { kEnd = 0, kStart = 1, kVertex = 2, kCross = 3 };
   // An event: its height, its kind (top two bits of key) and node (the rest: a strip never holds
-  // 2^30 spans, their records alone would take 48 GB); a crossing
-  // is of the node and its right neighbour, valid while the node's stamp is unchanged (every
-  // change of either's edge or of the pair bumps it).
+  // 2^30 spans, their records alone would take 48 GB). A crossing is of the node and its right
+  // neighbour, valid while the node's stamp is unchanged (every change of either's edge or of
+  // the pair bumps it).
   struct Event {
     double y;
     std::uint32_t key, stamp;
