@@ -3,6 +3,10 @@
 //   A1, A3: 100,000 separate segments (each its own path, butt caps), width 1 and 3.
 //   B:      one open polyline of 1,000,000 points (a 3:4 Lissajous), width 1.5, round joins.
 //   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).
+//   R:      one random self-crossing polyline, width 1, butt caps, miter joins: points uniform
+//           on the canvas (R1k, R10k, R30k: 10^3, 10^4, 3*10^4 points; the crossings grow as
+//           n^2), or a random walk with normal steps (sigma 8) reflected into the canvas (Rw100k,
+//           Rw1M: 10^5 and 10^6 points).
 // accuracy/<impl> renders random strokes and reports the coverage error against the exact
 // union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
 // memory/<workload>/<impl> reports the peak memory drawing adds to a process (counter
@@ -26,6 +30,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <random>
 #include <thread>
 #include <vector>
@@ -98,24 +103,53 @@ Workload walks() {
   return w;
 }
 
+Workload uniform_polyline(int n) {
+  Workload w{{}, 1.0, sr::Join::Miter};
+  Path p;
+  for (int k = 0; k < n; ++k)
+    p.pts.push_back({kSize * h01(2 * static_cast<std::uint64_t>(k)), kSize * h01(2 * static_cast<std::uint64_t>(k) + 1)});
+  w.paths.push_back(std::move(p));
+  return w;
+}
+
+Workload walk_polyline(int n) {
+  Workload w{{}, 1.0, sr::Join::Miter};
+  std::mt19937_64 rng(20261202);
+  std::normal_distribution<double> step(0, 8);
+  auto reflect = [](double v) {
+    v = std::fmod(v, 2.0 * kSize);
+    if (v < 0) v += 2.0 * kSize;
+    return v > kSize ? 2.0 * kSize - v : v;
+  };
+  Path p;
+  sr::Vec2 q{kSize / 2.0, kSize / 2.0};
+  for (int k = 0; k < n; ++k) {
+    p.pts.push_back(q);
+    q = {reflect(q.x + step(rng)), reflect(q.y + step(rng))};
+  }
+  w.paths.push_back(std::move(p));
+  return w;
+}
+
 Workload make_workload(char id) {
   switch (id) {
     case '1': return segments(1);
     case '3': return segments(3);
     case 'B': return lissajous();
+    case 'u': return uniform_polyline(1000);
+    case 'v': return uniform_polyline(10000);
+    case 'x': return uniform_polyline(30000);
+    case 'w': return walk_polyline(100000);
+    case 'W': return walk_polyline(1000000);
     default: return walks();
   }
 }
 
 const Workload& workload(char id) {
-  static const Workload a1 = make_workload('1'), a3 = make_workload('3'), b = make_workload('B'),
-                        c = make_workload('C');
-  switch (id) {
-    case '1': return a1;
-    case '3': return a3;
-    case 'B': return b;
-    default: return c;
-  }
+  static std::map<char, Workload> made;
+  auto it = made.find(id);
+  if (it == made.end()) it = made.emplace(id, make_workload(id)).first;
+  return it->second;
 }
 
 // ---- splinefig -------------------------------------------------------------------------
@@ -315,7 +349,8 @@ void BM_accuracy(benchmark::State& state, int impl) {
 
 void register_all() {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (auto [id, name] : {std::pair{'1', "A1"}, {'3', "A3"}, {'B', "B"}, {'C', "C"}}) {
+  for (auto [id, name] : {std::pair{'1', "A1"}, {'3', "A3"}, {'B', "B"}, {'C', "C"}, {'u', "R1k"}, {'v', "R10k"},
+                          {'x', "R30k"}, {'w', "Rw100k"}, {'W', "Rw1M"}}) {
     std::string base = std::string("stroke/") + name + "/";
     benchmark::RegisterBenchmark((base + "splinefig").c_str(), BM_splinefig, id, 1)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_splinefig, id, all)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -2,21 +2,21 @@
 // Exact scan conversion with fill-rule (union) semantics, one horizontal strip at a time.
 //
 // Within a strip [y0, y1] the chains are cut at every event: a chain starting or ending, or two
-// chains crossing (found exactly: between consecutive vertex heights of two chains the gap
-// x_a(y) - x_b(y) is linear, so a sign change locates the crossing). Between two consecutive
-// events no two chains cross, so they keep one left-to-right order; walking it while summing
-// dir gives the winding number of every gap, and a chain is a boundary of the filled region
-// exactly where the fill rule's verdict changes across it. Only those boundary pieces go to the
-// sink, signed +1 where the region begins (to their right) and -1 where it ends. An exact-area
-// accumulator fed with them yields the area of {rule(winding)}, not the integral of the winding
-// number, so overlapping parts of one shape count once.
+// chains crossing. Between two consecutive events no two chains cross, so they keep one
+// left-to-right order; summing dir along it gives the winding number of every gap, and a chain
+// is a boundary of the filled region exactly where the fill rule's verdict changes across it.
+// Only those boundary pieces go to the sink, signed +1 where the region begins (to their right)
+// and -1 where it ends. An exact-area accumulator fed with them yields the area of
+// {rule(winding)}, not the integral of the winding number, so overlapping parts of one shape
+// count once.
 //
 // The strip's chains fall into clusters: runs whose x ranges in the strip overlap, taken left
 // to right. No chain of one cluster can cross a chain of another, so each cluster is swept on
-// its own, with its own events, starting from the winding on its left. That winding changes
-// only where a chain left of it starts or ends without a partner there (a horizontal edge
-// across the gap), so a cluster inherits few events, usually none: the cost of a strip grows
-// with the events and chains of each cluster, not with those of the whole row.
+// its own, starting from the winding on its left. That winding changes only where a chain left
+// of it starts or ends without a partner there (a horizontal edge across the gap), so a cluster
+// inherits few events, usually none. A cluster is swept incrementally (sweep_cluster): the
+// order is kept between events and only neighbours are tested for crossings, so a strip costs
+// O((chains + crossings) log chains), however densely a path crosses itself.
 //
 // Sink concept: void edge(double xa, double ya, double xb, double yb, double sign), ya < yb.
 #include "chains.hpp"
@@ -76,25 +76,6 @@ class StripSweep {
     double ta, tb, xmin, xmax;
     int dir;
   };
-  // A span during its cluster's sweep: its current edge (x = ax + (y - ay) slope up to ny),
-  // its x in the current sub-strip, and its boundary status.
-  struct Live {
-    double x, ax, ay, slope, ny, tb;
-    double open_y;  // where the current boundary status began
-    std::size_t k, last;
-    std::uint32_t span;
-    int dir;
-    int sign;  // boundary status in the current sub-strip: +1 begins, -1 ends, 0 none
-    void load(const std::vector<Vec2>& v, std::size_t edge) {
-      k = edge;
-      const Vec2 a = v[edge], b = v[edge + 1];
-      ax = a.x;
-      ay = a.y;
-      ny = b.y;
-      slope = (b.x - a.x) / (b.y - a.y);
-    }
-    bool operator<(const Live& o) const { return x < o.x || (x == o.x && span < o.span); }
-  };
   // A change of the winding number left of a cluster: `delta` from height y on.
   struct Step {
     double y;
@@ -107,23 +88,21 @@ class StripSweep {
     if (y >= b.y) return b.x;
     return a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
   }
-  // x of the span's chain at height y within [ta, tb]; k is a cursor moved forward.
-  double x_on(const Span& s, std::size_t& k, double y) const {
-    const std::size_t last = g_->chains[s.chain].last;
-    while (k + 1 < last && g_->verts[k + 1].y < y) ++k;
-    return x_at(k, y);
-  }
   bool update_active(double y0, double y1);
   template <class Sink>
   void emit_simple(double y0, double y1, Sink& sink);
   void build_spans(double y0, double y1);
-  void crossings(const Span& a, const Span& b);
-  void cluster_events(std::size_t c0, std::size_t c1, double y0, double y1);
   void add_steps(std::size_t c0, std::size_t c1, double y0, double y1);
   template <class Sink>
-  void sweep_cluster(std::size_t c0, std::size_t c1, double y1, Sink& sink);
-  template <class Sink>
   void emit(const Span& s, double ya, double yb, double sign, Sink& sink) const;
+  template <class Sink>
+  void sweep_cluster(std::size_t c0, std::size_t c1, double y0, double y1, Sink& sink);
+  template <class Sink>
+  void set_status(std::uint32_t id, int w_left, double y, Sink& sink);
+  template <class Sink>
+  void rewalk(std::size_t lo, std::size_t hi, double y, Sink& sink);
+  void check_pair(std::size_t p, double y);
+  void push_event(double y, std::uint32_t type, std::uint32_t node, std::uint32_t stamp = 0);
   bool inside(int w) const { return s_->rule == FillRule::EvenOdd ? (w & 1) != 0 : w != 0; }
 
   const Geometry* g_ = nullptr;
@@ -134,11 +113,49 @@ class StripSweep {
   double first_end_ = INFINITY;      // the lowest ymax among the active chains
   std::vector<Span> spans_;
   std::vector<std::uint32_t> byx_;   // spans_ by xmin: clusters are runs of overlapping x ranges
-  std::vector<double> events_;       // of the current cluster
   std::vector<Step> steps_;          // winding changes left of the current cluster, by y
   int base_ = 0;                     // winding left of the current cluster at the strip's top
-  std::vector<std::pair<double, std::uint32_t>> pending_;  // the cluster's spans by ta
-  std::vector<Live> live_;           // the current sub-strip's spans, left to right
+  std::vector<std::pair<double, std::uint32_t>> pending_;  // the spans by xmin
+
+  // The sweep of a cluster: its spans (by their index in the cluster), their left-to-right order
+  // at the current height and each one's place in it, and the events still to come, a min-heap
+  // by (y, kind).
+  struct Node {
+    double ax, ay, slope, ny, tb;  // current edge: x = ax + (y - ay) slope up to ny; span ends at tb
+    double open_y;                 // where the current boundary status began
+    std::size_t k, last;
+    int dir, sign, w;              // w: the winding right of the span
+    std::uint32_t stamp;           // counts the checks of the pair with its right neighbour
+    double x(double y) const { return ax + (y - ay) * slope; }
+    void load(const std::vector<Vec2>& v, std::size_t edge) {
+      k = edge;
+      const Vec2 a = v[edge], b = v[edge + 1];
+      ax = a.x;
+      ay = a.y;
+      ny = b.y;
+      slope = (b.x - a.x) / (b.y - a.y);
+    }
+  };
+  enum : std::uint32_t { kEnd = 0, kStart = 1, kVertex = 2, kCross = 3 };
+  // An event: its height, its kind (top two bits of key) and node (the rest: a strip never holds
+  // 2^30 spans, their records alone would take 48 GB). A crossing is of the node and its right
+  // neighbour, valid while the node's stamp is unchanged (every change of either's edge or of
+  // the pair bumps it).
+  struct Event {
+    double y;
+    std::uint32_t key, stamp;
+    std::uint32_t type() const { return key >> 30; }
+    std::uint32_t node() const { return key & ((1u << 30) - 1); }
+    bool operator>(const Event& o) const { return y > o.y || (y == o.y && type() > o.type()); }
+  };
+  static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  std::vector<Node> nodes_;
+  std::vector<std::uint32_t> ord_;   // node ids, left to right
+  std::vector<std::uint32_t> pos_;   // per node: its index in ord_, or kNone while not live
+  std::vector<Event> heap_;
+  std::size_t ic0_ = 0;              // the cluster's first index in byx_
+  int left_ = 0;                     // the winding left of the cluster at the current height
+  int mask_ = ~0;                    // inside(w) is (w & mask_) != 0
 };
 
 // Drops finished chains, adds those starting before the strip's bottom. False if none is left.
@@ -209,89 +226,202 @@ void StripSweep::emit_simple(double y0, double y1, Sink& sink) {
   }
 }
 
-// The spans byx_[c0, c1) form one cluster: no other span's x range overlaps theirs, so no
-// other span crosses them and the winding left of them changes only at steps_. Between
-// consecutive events no two of them cross: they keep one left-to-right order, and walking it
-// from the winding on their left gives every gap's winding. A span's boundary status is
-// emitted only when it changes, so a boundary running through several sub-strips reaches the
-// sink as one piece.
+// A cluster, swept incrementally (Bentley-Ottmann inside the strip). Between events the
+// spans keep one left-to-right order (ord_); each span knows the winding on its right, so its
+// boundary status follows from its own and its left neighbour's. Events, lowest first:
+//  - a span ends or starts: it leaves or enters the order at its place (binary search by x, then
+//    slope), and the windings are re-walked from there until they agree with the old ones again
+//    (at once for the pair of chains meeting at a vertex);
+//  - a span's chain turns at a vertex: its new edge is checked against its two neighbours;
+//  - two neighbours cross: they swap, and only their two windings and statuses change;
+//  - the winding on the cluster's left changes (steps_, rare): every winding is re-walked.
+// Only neighbours are tested for crossings (a converging pair's crossing on their current edges,
+// if it comes before either edge ends), so a strip costs O((spans + crossings) log spans).
 template <class Sink>
-void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y1, Sink& sink) {
+void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double y1, Sink& sink) {
   const auto& v = g_->verts;
-  // Spans by the height where they start; each is live from its ta to its tb.
-  pending_.clear();
-  for (std::size_t c = c0; c < c1; ++c) pending_.push_back({spans_[byx_[c]].ta, byx_[c]});
-  sort_small(pending_.begin(), pending_.end());
-  std::size_t next = 0, step = 0;
-  int left = base_;
-  live_.clear();
-  double first_end = y1;  // the lowest tb among the live spans
-  const int mask = s_->rule == FillRule::EvenOdd ? 1 : ~0;  // inside(w) is (w & mask) != 0
-  for (std::size_t e = 0; e + 1 < events_.size(); ++e) {
-    const double ya = events_[e], yb = events_[e + 1];
-    if (!(yb > ya)) continue;
-    while (step < steps_.size() && steps_[step].y <= ya) left += steps_[step++].delta;
-    // Close the spans that ended, open those that start.
-    if (first_end < yb) {
-      std::size_t n = 0;
-      first_end = y1;
-      for (std::size_t l = 0; l < live_.size(); ++l) {
-        const Live& L = live_[l];
-        if (L.tb >= yb) {
-          first_end = std::min(first_end, L.tb);
-          live_[n++] = L;
-        } else if (L.sign != 0) {
-          emit(spans_[L.span], L.open_y, ya, L.sign, sink);
+  const std::size_t n = c1 - c0;
+  ic0_ = c0;
+  left_ = base_;
+  mask_ = s_->rule == FillRule::EvenOdd ? 1 : ~0;
+  nodes_.resize(n);
+  pos_.assign(n, kNone);
+  ord_.clear();
+  heap_.clear();
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Span& s = spans_[byx_[c0 + i]];
+    Node& N = nodes_[i];
+    N.last = g_->chains[s.chain].last;
+    N.load(v, s.k);
+    while (N.ny <= s.ta && N.k + 1 < N.last) N.load(v, N.k + 1);
+    N.tb = s.tb;
+    N.dir = s.dir;
+    N.sign = 0;
+    N.w = 0;
+    N.stamp = 0;
+    N.open_y = s.ta;
+    if (s.ta > y0) {
+      push_event(s.ta, kStart, i);
+    } else {
+      ord_.push_back(i);
+      if (N.ny < N.tb) push_event(N.ny, kVertex, i);
+    }
+    if (s.tb < y1) push_event(s.tb, kEnd, i);
+  }
+  // The order at the strip's top: by x, spans leaving one point by slope.
+  std::sort(ord_.begin(), ord_.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const Node &A = nodes_[a], &B = nodes_[b];
+    const double xa = A.x(y0), xb = B.x(y0);
+    if (xa != xb) return xa < xb;
+    if (A.slope != B.slope) return A.slope < B.slope;
+    return a < b;
+  });
+  for (std::size_t p = 0; p < ord_.size(); ++p) pos_[ord_[p]] = static_cast<std::uint32_t>(p);
+  rewalk(0, ord_.size(), y0, sink);
+  for (std::size_t p = 0; p + 1 < ord_.size(); ++p) check_pair(p, y0);
+  std::size_t step = 0;
+  const auto greater = std::greater<>{};
+  while (!heap_.empty() || step < steps_.size()) {
+    if (step < steps_.size() && (heap_.empty() || steps_[step].y <= heap_.front().y)) {
+      const double y = steps_[step].y;
+      for (; step < steps_.size() && steps_[step].y == y; ++step) left_ += steps_[step].delta;
+      rewalk(0, ord_.size(), y, sink);
+      continue;
+    }
+    const Event e = heap_.front();
+    std::pop_heap(heap_.begin(), heap_.end(), greater);
+    heap_.pop_back();
+    const double y = e.y;
+    if (e.type() == kCross) {
+      const std::uint32_t a = e.node();
+      if (pos_[a] == kNone || nodes_[a].stamp != e.stamp || pos_[a] + 1 >= ord_.size()) continue;
+      const std::size_t p = pos_[a];
+      const std::uint32_t b = ord_[p + 1];
+      Node &A = nodes_[a], &B = nodes_[b];
+      ord_[p] = b;
+      ord_[p + 1] = a;
+      pos_[b] = static_cast<std::uint32_t>(p);
+      pos_[a] = static_cast<std::uint32_t>(p + 1);
+      const int wl = p > 0 ? nodes_[ord_[p - 1]].w : left_;
+      B.w = wl + B.dir;
+      set_status(b, wl, y, sink);
+      A.w = B.w + A.dir;
+      set_status(a, B.w, y, sink);
+      if (p > 0) check_pair(p - 1, y);
+      check_pair(p, y);
+      check_pair(p + 1, y);
+    } else if (e.type() == kVertex) {
+      const std::uint32_t id = e.node();
+      Node& N = nodes_[id];
+      N.load(v, N.k + 1);
+      if (N.ny < N.tb) push_event(N.ny, kVertex, id);
+      const std::size_t p = pos_[id];
+      if (p > 0) check_pair(p - 1, y);
+      check_pair(p, y);
+    } else {
+      // Every span ending or starting at this height, then one re-walk of the windings over the
+      // stretch they touched [lo, hi] and on until the windings agree with the old ones.
+      std::size_t lo = ord_.size(), hi = 0;
+      for (Event f = e;;) {
+        const std::uint32_t id = f.node();
+        Node& N = nodes_[id];
+        if (f.type() == kEnd) {
+          const std::size_t p = pos_[id];
+          if (N.sign != 0) emit(spans_[byx_[c0 + id]], N.open_y, y, N.sign, sink);
+          ord_.erase(ord_.begin() + static_cast<std::ptrdiff_t>(p));
+          for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
+          pos_[id] = kNone;
+          lo = std::min(lo, p);
+          if (p < hi) --hi;
+          hi = std::max(hi, p);
+        } else {
+          const double x = N.x(y);
+          const auto at = std::upper_bound(ord_.begin(), ord_.end(), id, [&](std::uint32_t a, std::uint32_t b) {
+            const Node &A = nodes_[a], &B = nodes_[b];
+            const double xb = B.x(y);
+            if (x != xb) return x < xb;
+            if (A.slope != B.slope) return A.slope < B.slope;
+            return a < b;
+          });
+          const std::size_t p = static_cast<std::size_t>(at - ord_.begin());
+          ord_.insert(at, id);
+          for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
+          N.sign = 0;
+          N.open_y = y;
+          if (N.ny < N.tb) push_event(N.ny, kVertex, id);
+          if (p <= hi && lo <= hi) ++hi;
+          lo = std::min(lo, p);
+          hi = std::max(hi, p);
         }
+        if (heap_.empty() || heap_.front().y != y || heap_.front().type() > kStart) break;
+        f = heap_.front();
+        std::pop_heap(heap_.begin(), heap_.end(), greater);
+        heap_.pop_back();
       }
-      live_.resize(n);
-    }
-    for (; next < pending_.size() && pending_[next].first <= ya; ++next) {
-      const Span& s = spans_[pending_[next].second];
-      Live L;
-      L.span = pending_[next].second;
-      L.k = s.k;
-      L.last = g_->chains[s.chain].last;
-      L.dir = s.dir;
-      L.sign = 0;
-      L.tb = s.tb;
-      L.open_y = ya;
-      L.load(v, L.k);
-      first_end = std::min(first_end, L.tb);
-      live_.push_back(L);
-    }
-    // x at mid-height, then insertion sort by (x, span): linear when the order barely changed.
-    const double ym = 0.5 * (ya + yb);
-    for (Live& L : live_) {
-      while (L.ny < ym && L.k + 1 < L.last) L.load(v, L.k + 1);
-      L.x = L.ax + (ym - L.ay) * L.slope;
-    }
-    for (std::size_t i = 1; i < live_.size(); ++i) {
-      if (!(live_[i] < live_[i - 1])) continue;
-      const Live key = live_[i];
-      std::size_t j = i;
-      do {
-        live_[j] = live_[j - 1];
-        --j;
-      } while (j > 0 && key < live_[j - 1]);
-      live_[j] = key;
-    }
-    int w = left;
-    bool before = (w & mask) != 0;
-    for (Live& L : live_) {
-      w += L.dir;
-      const bool after = (w & mask) != 0;
-      const int sign = before == after ? 0 : (after ? 1 : -1);
-      before = after;
-      if (sign != L.sign) {
-        if (L.sign != 0) emit(spans_[L.span], L.open_y, ya, L.sign, sink);
-        L.sign = sign;
-        L.open_y = ya;
-      }
+      if (lo > hi) continue;
+      rewalk(lo, hi, y, sink);
+      for (std::size_t p = lo > 0 ? lo - 1 : 0; p <= hi && p < ord_.size(); ++p) check_pair(p, y);
     }
   }
-  for (const Live& L : live_)
-    if (L.sign != 0) emit(spans_[L.span], L.open_y, std::min(L.tb, y1), L.sign, sink);
+  for (const std::uint32_t id : ord_) {
+    const Node& N = nodes_[id];
+    if (N.sign != 0) emit(spans_[byx_[c0 + id]], N.open_y, std::min(N.tb, y1), N.sign, sink);
+  }
+}
+
+inline void StripSweep::push_event(double y, std::uint32_t type, std::uint32_t node, std::uint32_t stamp) {
+  heap_.push_back({y, type << 30 | node, stamp});
+  std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+}
+
+// Schedules the crossing of the neighbours ord_[p] (left) and ord_[p + 1] at or after y, if
+// they converge and meet before either's current edge ends (else the vertex or end event there
+// checks them again); any crossing scheduled for ord_[p] before is void from now on. A pair
+// found out of order while converging swaps at once; a diverging pair never swaps, so no two
+// spans swap back and forth at one height.
+inline void StripSweep::check_pair(std::size_t p, double y) {
+  if (p >= ord_.size()) return;
+  const std::uint32_t a = ord_[p];
+  Node& A = nodes_[a];
+  ++A.stamp;
+  if (p + 1 >= ord_.size()) return;
+  const Node& B = nodes_[ord_[p + 1]];
+  const double rel = A.slope - B.slope;
+  if (!(rel > 0)) return;
+  double yc = y + (B.x(y) - A.x(y)) / rel;
+  if (!(yc >= y)) yc = y;
+  const double lim = std::min(std::min(A.ny, B.ny), std::min(A.tb, B.tb));
+  if (!(yc < lim)) return;
+  push_event(yc, kCross, a, A.stamp);
+}
+
+// The boundary status of node id from the winding on its left and its own (on its right);
+// the piece it ends is emitted.
+template <class Sink>
+void StripSweep::set_status(std::uint32_t id, int w_left, double y, Sink& sink) {
+  Node& N = nodes_[id];
+  const bool before = (w_left & mask_) != 0, after = (N.w & mask_) != 0;
+  const int sign = before == after ? 0 : (after ? 1 : -1);
+  if (sign == N.sign) return;
+  if (N.sign != 0) emit(spans_[byx_[ic0_ + id]], N.open_y, y, N.sign, sink);
+  N.sign = sign;
+  N.open_y = y;
+}
+
+// Recomputes the windings from ord_[lo] on: through ord_[hi] at least, then until a span's
+// winding is what it was (everything right of it is then unchanged too).
+template <class Sink>
+void StripSweep::rewalk(std::size_t lo, std::size_t hi, double y, Sink& sink) {
+  int w = lo > 0 ? nodes_[ord_[lo - 1]].w : left_;
+  for (std::size_t j = lo; j < ord_.size(); ++j) {
+    const std::uint32_t id = ord_[j];
+    Node& N = nodes_[id];
+    const int nw = w + N.dir;
+    if (j > hi && nw == N.w) break;
+    N.w = nw;
+    set_status(id, w, y, sink);
+    w = nw;
+  }
 }
 
 template <class Sink>
@@ -320,8 +450,7 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
       c0 = c1;
       continue;
     }
-    cluster_events(c0, c1, y0, y1);
-    sweep_cluster(c0, c1, y1, sink);
+    sweep_cluster(c0, c1, y0, y1, sink);
     add_steps(c0, c1, y0, y1);
     c0 = c1;
   }
