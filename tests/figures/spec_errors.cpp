@@ -12,9 +12,6 @@ using splinefig::figures::SpecFileError;
 
 namespace {
 
-// The message parse_spec throws for `text`, or "" if it parses.
-std::string error_of(const std::string& text) { return figtest::spec_error(text, "bad.toml"); }
-
 const char* kAxes = "[canvas]\nwidth = 100\nheight = 80\n[axes]\nx_range = [0, 1]\ny_range = [0, 1]\n";
 
 }  // namespace
