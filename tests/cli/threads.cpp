@@ -9,7 +9,10 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <system_error>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -33,7 +36,31 @@ fs::path scratch(const std::string& name) {
 // Runs `command` (a shell command line) as user nobody with at most `nproc` processes and
 // threads for that user; the exit code (-1 if killed after `seconds`: SIGKILL, since a process
 // stuck loading OpenImageIO with its signals blocked by the atomic writer would not see SIGTERM).
+// Waits (up to 10 s) until no process of user nobody is left: RLIMIT_NPROC counts all of the
+// user's processes, and one killed by a probe's timeout counts until it is reaped.
+void wait_until_nobody_runs() {
+  for (int i = 0; i < 100; ++i) {
+    bool found = false;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator("/proc", ec)) {
+      std::ifstream status(e.path() / "status");
+      for (std::string line; std::getline(status, line);)
+        if (line.rfind("Uid:", 0) == 0) {
+          std::istringstream uids(line.substr(4));
+          int real = -1;
+          uids >> real;
+          found = found || real == 65534;
+          break;
+        }
+      if (found) break;
+    }
+    if (!found) return;
+    ::usleep(100000);
+  }
+}
+
 int run_limited(const std::string& command, int nproc, int seconds = 300) {
+  wait_until_nobody_runs();
   const std::string inner = "ulimit -u " + std::to_string(nproc) + " && exec " + command + " 2>/dev/null";
   const std::string cmd = "timeout -s KILL " + std::to_string(seconds) + " setpriv --reuid=65534 --regid=65534 --clear-groups bash -c " + shell_quote(inner);
   const int status = std::system(cmd.c_str());
