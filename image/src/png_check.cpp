@@ -75,6 +75,9 @@ void check_png_size(const std::string& path, std::uint64_t width, std::uint64_t 
   if (pixels > max_image_pixels || values > max_image_values)
     bad(path, "image too large (" + std::to_string(width) + " x " + std::to_string(height) +
                   " pixels declared in the header, limit 2^28 pixels)");
+  if (width > max_image_side || height > max_image_side)
+    bad(path, "image too large (" + std::to_string(width) + " x " + std::to_string(height) +
+                  " pixels declared in the header, limit 65536 a side)");
 }
 
 }  // namespace

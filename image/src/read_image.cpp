@@ -74,6 +74,9 @@ std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spe
   if (values > max_image_values || pixels > max_image_pixels)
     unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
                          std::to_string(spec.channels) + " values, limit 2^28 pixels and 2^30 values)");
+  if (std::uint64_t(spec.width) > max_image_side || std::uint64_t(spec.height) > max_image_side)
+    unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                         " pixels, limit 65536 a side)");
   return values;
 }
 

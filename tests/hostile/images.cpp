@@ -120,3 +120,12 @@ TEST_CASE("an OpenEXR attribute larger than its file is refused before OpenEXR a
     CHECK_THROWS_WITH(splinefig::check_image_header(path), Catch::Contains("more than the file holds"));
   }
 }
+
+// Found by fuzz_resample: a 457-byte OpenEXR header declaring 2097155 x 3 pixels (within the
+// pixel and value limits) for which OpenEXR asked for 4 GiB of scanline buffers.
+TEST_CASE("an image wider or taller than 65536 px is refused from its header") {
+  const std::string path = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/hostile/data/exr_wide_scanlines.exr";
+  CHECK_THROWS_WITH(splinefig::check_image_header(path),
+                    Catch::Contains("image too large (2097155 x 3 pixels, limit 65536 a side)"));
+  CHECK_THROWS_WITH(splinefig::read_image(path), Catch::Contains("limit 65536 a side"));
+}

@@ -1,6 +1,7 @@
 // docs/limits.md states the limits the code enforces: each row of its table that has a public
 // constant says that constant's value (the refusal messages are checked by the other cases).
 #include <splinefig/figures/axes.hpp>
+#include <splinefig/image/io.hpp>
 #include <splinefig/figures/spec.hpp>
 #include <splinefig/resample/resample.hpp>
 
@@ -47,6 +48,7 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"ticks per axis (explicit, or from `*_tick_step`)", std::to_string(f::kMaxTicks)},
       {"`x_marks`, `y_marks`, curve `marks`", std::to_string(f::kMaxMarks)},
       {"`--threads` (every command) and the resampler's library thread count", std::to_string(splinefig::kMaxResampleThreads)},
+      {"image read: either side declared in the header", std::to_string(splinefig::max_image_side) + " px"},
       {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},
   };
   for (const auto& [quantity, limit] : expected) {

@@ -31,6 +31,9 @@ struct UnwritableImage : UnwritableFile {
 // before any pixel data is decompressed (a PNG of a few KB can declare 20000 x 20000 zeros).
 inline constexpr std::uint64_t max_image_values = std::uint64_t(1) << 30;
 inline constexpr std::uint64_t max_image_pixels = std::uint64_t(1) << 28;
+// And in either side: 65536 px (OpenEXR sizes its scanline buffers by the width; a header of a
+// few hundred bytes declaring 2097155 x 3 pixels made it ask for 4 GiB).
+inline constexpr std::uint64_t max_image_side = std::uint64_t(1) << 16;
 
 enum class ReadMode {
   // The values the file holds, converted to float the way OpenImageIO converts them (8-bit
