@@ -248,7 +248,7 @@ void draw_series(const SeriesElement& s, ElementPainter& d) {
   for (Vec2 q : s.points) pts.push_back(d.map(q));
   const bool line = look.mode == SeriesMode::Line || look.mode == SeriesMode::LineMarkers;
   const bool marks = look.mode == SeriesMode::Markers || look.mode == SeriesMode::LineMarkers || look.mode == SeriesMode::Stems;
-  if (line && !s.bezier.empty() && d.map.x.scale == Scale::Linear && d.map.y.scale == Scale::Linear) {
+  if (line && !s.bezier.empty() && d.map.affine()) {
     // A cubic spline: its Bezier pieces mapped to pixels (an affine map keeps them exact).
     render::Path path;
     path.move_to(d.map(s.bezier[0]));

@@ -42,7 +42,7 @@ PreparedAxes prepare_axes(const AxesSpec& ax) {
           out.generated.emplace_back(elements.size(), origin);
           if (g->path) {
             g->series.points = rough_points(*g->path);
-            g->series.bezier = g->path->bezier;
+            g->series.bezier = std::move(g->path->bezier);  // the path keeps only what sampling needs
             out.paths.emplace_back(elements.size(), std::move(*g->path));
           }
           elements.push_back(std::move(g->series));
