@@ -1,5 +1,5 @@
 #pragma once
-// Exact area coverage of one pixel row from signed boundary edges (the box pixel filter).
+// Exact area coverage of pixel rows from signed boundary edges (the box pixel filter).
 //
 // An edge piece with sign s says "the region begins (s = +1) or ends (s = -1) to my right". For
 // the part of the edge inside column i, the area to its right within the column is dy times
@@ -8,6 +8,7 @@
 // of the region in each pixel (the accumulation of font-rs, fed only with boundary edges).
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace splinefig::render::detail {
@@ -73,6 +74,46 @@ struct BoxRow {
     a = d * (static_cast<double>(i1 + 1) - 0.5 * (x + xb));
     acc_p[i1] = (acc_p[i1] + carry) + s * a;
     acc_p[i1 + 1] += s * (d - a);
+  }
+};
+
+// A band of consecutive rows, fed with edge pieces of any height inside it: each piece is cut
+// at the rows' boundaries and goes to its rows. The scan converter resolves the union once for
+// the whole band (one strip), so its per-strip work is shared by all the band's rows.
+struct BoxBand {
+  std::vector<BoxRow> rows;
+  int top = 0;  // canvas row of rows[0]
+  int count = 0;
+
+  void reset(int w, int max_rows) {
+    rows.resize(static_cast<std::size_t>(max_rows));
+    for (BoxRow& r : rows) r.reset(w);
+  }
+  void begin(int first_row, int n) {
+    top = first_row;
+    count = n;
+    for (int i = 0; i < n; ++i) rows[static_cast<std::size_t>(i)].begin(static_cast<double>(first_row + i));
+  }
+  BoxRow& row(int canvas_row) { return rows[static_cast<std::size_t>(canvas_row - top)]; }
+  void edge(double xa, double ya, double xb, double yb, double s) {
+    int r = static_cast<int>(ya);  // ya >= top >= 0: truncation is floor
+    if (r + 1 >= yb) {             // within one row: the common case
+      rows[static_cast<std::size_t>(r - top)].edge(xa, ya, xb, yb, s);
+      return;
+    }
+    const double dxdy = (xb - xa) / (yb - ya);
+    double x = xa, y = ya;
+    for (;; ++r) {
+      const double yn = static_cast<double>(r + 1);
+      if (yn >= yb) {
+        rows[static_cast<std::size_t>(r - top)].edge(x, y, xb, yb, s);
+        return;
+      }
+      const double xn = xa + (yn - ya) * dxdy;
+      rows[static_cast<std::size_t>(r - top)].edge(x, y, xn, yn, s);
+      x = xn;
+      y = yn;
+    }
   }
 };
 

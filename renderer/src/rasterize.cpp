@@ -30,29 +30,43 @@ inline void over(float* px, const float* col, float c) {
   px[3] = col[3] * c + px[3] * k;
 }
 
-void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1, BoxRow& row, StripSweep& sweep) {
+// The item's rows in [r0, r1), one band of kBandRows rows at a time: the band is one strip of
+// the scan converter (its union resolved once for all its rows), then each row is summed and
+// composited. Strips are aligned to multiples of their height whatever r0 is, so a row's
+// coverage is the same for any thread count.
+void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1, BoxBand& band, StripSweep& sweep) {
   sweep.reset(g, p.shape);
   const int y_begin = std::max(r0, p.row0), y_end = std::min(r1, p.row1);
-  for (int y = y_begin; y < y_end; ++y) {
-    row.begin(y);
-    if (!sweep.strip(static_cast<double>(y), static_cast<double>(y + 1), row)) break;
-    if (row.cmax < row.cmin) continue;
-    // The canvas (16 bytes a pixel) rarely stays in cache across thousands of small items:
-    // ask for the pixels two rows ahead, whose columns are close to this row's.
-    if (y + 2 < y_end) {
-      const int x0 = std::max(0, row.cmin - 4), x1 = std::min(img.width - 1, row.cmax + 5);
-      for (int x = x0; x <= x1; x += 4) __builtin_prefetch(img.pixel(x, y + 2), 1);
-      __builtin_prefetch(img.pixel(x1, y + 2), 1);
+  for (int b0 = y_begin - y_begin % kBandRows; b0 < y_end; b0 += kBandRows) {
+    const int b1 = std::min(b0 + kBandRows, img.height);
+    band.begin(b0, b1 - b0);
+    const bool more = sweep.strip(static_cast<double>(b0), static_cast<double>(b1), band);
+    for (int y = b0; y < b1; ++y) {
+      BoxRow& row = band.row(y);
+      if (row.cmax < row.cmin) continue;
+      if (y < y_begin || y >= y_end) {  // nothing is drawn there; keep the accumulator zero
+        std::fill(row.acc.begin(), row.acc.end(), 0.0);
+        continue;
+      }
+      // The canvas (16 bytes a pixel) rarely stays in cache across thousands of small items:
+      // ask for the pixels two rows ahead, whose columns are close to this row's.
+      if (y + 2 < y_end) {
+        const int x0 = std::max(0, row.cmin - 4), x1 = std::min(img.width - 1, row.cmax + 5);
+        for (int x = x0; x <= x1; x += 4) __builtin_prefetch(img.pixel(x, y + 2), 1);
+        __builtin_prefetch(img.pixel(x1, y + 2), 1);
+      }
+      double cov = 0;
+      const int xe = std::min(row.cmax + 1, img.width - 1);
+      float* px = img.pixel(0, y);
+      for (int x = row.cmin; x <= xe; ++x) {
+        cov += row.acc[static_cast<std::size_t>(x)];
+        row.acc[static_cast<std::size_t>(x)] = 0;
+        const double c = cov;
+        if (c > 1e-9) over(px + 4 * static_cast<std::size_t>(x), p.color, static_cast<float>(std::min(c, 1.0)));
+      }
+      for (int x = xe + 1; x <= std::min(row.cmax + 1, img.width + 1); ++x) row.acc[static_cast<std::size_t>(x)] = 0;
     }
-    double cov = 0;
-    const int xe = std::min(row.cmax + 1, img.width - 1);
-    for (int x = row.cmin; x <= xe; ++x) {
-      cov += row.acc[static_cast<std::size_t>(x)];
-      row.acc[static_cast<std::size_t>(x)] = 0;
-      double c = cov;
-      if (c > 1e-9) over(img.pixel(x, y), p.color, static_cast<float>(std::min(c, 1.0)));
-    }
-    for (int x = xe + 1; x <= std::min(row.cmax + 1, img.width + 1); ++x) row.acc[static_cast<std::size_t>(x)] = 0;
+    if (!more) break;
   }
 }
 
@@ -101,8 +115,8 @@ Image rasterize(const Scene& scene, int threads) {
     // cache and memory holds one item at a time. Every row is computed exactly as in the band
     // schedule below (a strip's result does not depend on where its band starts, and filtered
     // items are drawn band by band with the same band boundaries): identical bytes.
-    BoxRow row;
-    row.reset(W);
+    BoxBand band;
+    band.reset(W, kBandRows);
     FilterScratch fs;
     StripSweep sweep;
     Prepared p;
@@ -115,7 +129,7 @@ Image rasterize(const Scene& scene, int threads) {
       if (p.raster) {
         composite_raster(*p.raster, img, 0, H);
       } else if (box) {
-        render_box(geom, p, img, p.row0, p.row1, row, sweep);
+        render_box(geom, p, img, p.row0, p.row1, band, sweep);
       } else {
         for (int b = p.row0 / kBandRows; b <= (p.row1 - 1) / kBandRows; ++b)
           render_filtered(geom, p, grid, img, b * kBandRows, std::min(H, (b + 1) * kBandRows), fs, sweep);
@@ -174,8 +188,8 @@ Image rasterize(const Scene& scene, int threads) {
 
   std::atomic<int> next{0};
   auto worker = [&]() {
-    BoxRow row;
-    row.reset(W);
+    BoxBand band;
+    band.reset(W, kBandRows);
     FilterScratch fs;
     StripSweep sweep;
     for (;;) {
@@ -186,7 +200,7 @@ Image rasterize(const Scene& scene, int threads) {
         const Prepared& p = prep[i];
         const Geometry& g = geoms[run_of[i]];
         if (p.raster) composite_raster(*p.raster, img, r0, r1);
-        else if (box) render_box(g, p, img, r0, r1, row, sweep);
+        else if (box) render_box(g, p, img, r0, r1, band, sweep);
         else render_filtered(g, p, grid, img, r0, r1, fs, sweep);
       }
     }

@@ -8,6 +8,7 @@ void StripSweep::build_spans(double y0, double y1) {
   const auto& ch = g_->chains;
   const auto& v = g_->verts;
   spans_.clear();
+  edges_ = 0;
   for (std::size_t i = 0; i < active_.size(); ++i) {
     const Chain& c = ch[active_[i]];
     std::size_t& k = cursor_[i];
@@ -26,6 +27,7 @@ void StripSweep::build_spans(double y0, double y1) {
       s.xmin = std::min(s.xmin, v[j + 1].x);
       s.xmax = std::max(s.xmax, v[j + 1].x);
     }
+    edges_ += j - k + 1;
     double xb = x_at(std::min(j, c.last - 1), s.tb);
     s.xmin = std::min(s.xmin, xb);
     s.xmax = std::max(s.xmax, xb);

@@ -91,10 +91,17 @@ class StripSweep {
   bool update_active(double y0, double y1);
   template <class Sink>
   void emit_simple(double y0, double y1, Sink& sink);
+  template <class Sink>
+  void sweep_spans(double y0, double y1, Sink& sink);
+  // Above this many chain edges per span and row, a strip is swept row by row (strip()).
+  static constexpr double kDenseEdgesPerRow = 2;
   void build_spans(double y0, double y1);
   void add_steps(std::size_t c0, std::size_t c1, double y0, double y1);
   template <class Sink>
-  void emit(const Span& s, double ya, double yb, double sign, Sink& sink) const;
+  void emit(const Span& s, double ya, double yb, double sign, Sink& sink) const { emit(s.k, s.chain, ya, yb, sign, sink); }
+  // The chain's pieces between heights ya and yb, its edges searched from edge k on.
+  template <class Sink>
+  void emit(std::size_t k, std::size_t chain, double ya, double yb, double sign, Sink& sink) const;
   template <class Sink>
   void sweep_cluster(std::size_t c0, std::size_t c1, double y0, double y1, Sink& sink);
   template <class Sink>
@@ -112,6 +119,7 @@ class StripSweep {
   std::vector<std::size_t> cursor_;  // per active chain: first edge not entirely above
   double first_end_ = INFINITY;      // the lowest ymax among the active chains
   std::vector<Span> spans_;
+  std::size_t edges_ = 0;            // chain edges meeting the strip, over all spans
   std::vector<std::uint32_t> byx_;   // spans_ by xmin: clusters are runs of overlapping x ranges
   std::vector<Step> steps_;          // winding changes left of the current cluster, by y
   int base_ = 0;                     // winding left of the current cluster at the strip's top
@@ -121,9 +129,10 @@ class StripSweep {
   // at the current height and each one's place in it, and the events still to come, a min-heap
   // by (y, kind).
   struct Node {
-    double ax, ay, slope, ny, tb;  // current edge: x = ax + (y - ay) slope up to ny; span ends at tb
+    double ax, ay, slope, ny, ta, tb;  // current edge: x = ax + (y - ay) slope up to ny; span in [ta, tb]
     double open_y;                 // where the current boundary status began
-    std::size_t k, last;
+    std::size_t k, last, open_k;   // current edge, the chain's last vertex, the edge at open_y
+    std::size_t chain;
     int dir, sign, w;              // w: the winding right of the span
     std::uint32_t stamp;           // counts the checks of the pair with its right neighbour
     double x(double y) const { return ax + (y - ay) * slope; }
@@ -152,7 +161,9 @@ class StripSweep {
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> ord_;   // node ids, left to right
   std::vector<std::uint32_t> pos_;   // per node: its index in ord_, or kNone while not live
-  std::vector<Event> heap_;
+  std::vector<Event> heap_;                                // vertices and crossings
+  std::vector<std::pair<double, std::uint32_t>> starts_;  // spans starting inside the strip, by y
+  std::vector<std::pair<double, std::uint32_t>> ends_;    // spans ending inside the strip, by y
   std::size_t ic0_ = 0;              // the cluster's first index in byx_
   int left_ = 0;                     // the winding left of the cluster at the current height
   int mask_ = ~0;                    // inside(w) is (w & mask_) != 0
@@ -196,10 +207,9 @@ inline bool StripSweep::update_active(double y0, double y1) {
 }
 
 template <class Sink>
-void StripSweep::emit(const Span& s, double ya, double yb, double sign, Sink& sink) const {
+void StripSweep::emit(std::size_t k, std::size_t chain, double ya, double yb, double sign, Sink& sink) const {
   const auto& v = g_->verts;
-  const std::size_t last = g_->chains[s.chain].last;
-  std::size_t k = s.k;
+  const std::size_t last = g_->chains[chain].last;
   while (k + 1 < last && v[k + 1].y <= ya) ++k;
   for (; k < last && v[k].y < yb; ++k) {
     double lo = std::max(ya, v[k].y), hi = std::min(yb, v[k + 1].y);
@@ -248,26 +258,33 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
   pos_.assign(n, kNone);
   ord_.clear();
   heap_.clear();
+  starts_.clear();
+  ends_.clear();
   for (std::uint32_t i = 0; i < n; ++i) {
     const Span& s = spans_[byx_[c0 + i]];
     Node& N = nodes_[i];
     N.last = g_->chains[s.chain].last;
     N.load(v, s.k);
     while (N.ny <= s.ta && N.k + 1 < N.last) N.load(v, N.k + 1);
+    N.ta = s.ta;
     N.tb = s.tb;
     N.dir = s.dir;
     N.sign = 0;
     N.w = 0;
     N.stamp = 0;
     N.open_y = s.ta;
+    N.open_k = N.k;
+    N.chain = s.chain;
     if (s.ta > y0) {
-      push_event(s.ta, kStart, i);
+      starts_.push_back({s.ta, i});
     } else {
       ord_.push_back(i);
       if (N.ny < N.tb) push_event(N.ny, kVertex, i);
     }
-    if (s.tb < y1) push_event(s.tb, kEnd, i);
+    if (s.tb < y1) ends_.push_back({s.tb, i});
   }
+  sort_small(starts_.begin(), starts_.end());
+  sort_small(ends_.begin(), ends_.end());
   // The order at the strip's top: by x, spans leaving one point by slope.
   std::sort(ord_.begin(), ord_.end(), [&](std::uint32_t a, std::uint32_t b) {
     const Node &A = nodes_[a], &B = nodes_[b];
@@ -279,19 +296,70 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
   for (std::size_t p = 0; p < ord_.size(); ++p) pos_[ord_[p]] = static_cast<std::uint32_t>(p);
   rewalk(0, ord_.size(), y0, sink);
   for (std::size_t p = 0; p + 1 < ord_.size(); ++p) check_pair(p, y0);
-  std::size_t step = 0;
+  // Events come from four sources, each in y order: the steps of the winding on the left, the
+  // spans' ends and starts (sorted once), and the heap of vertices and crossings. At one height
+  // they are taken in that order.
+  std::size_t step = 0, ie = 0, is = 0;
   const auto greater = std::greater<>{};
-  while (!heap_.empty() || step < steps_.size()) {
-    if (step < steps_.size() && (heap_.empty() || steps_[step].y <= heap_.front().y)) {
-      const double y = steps_[step].y;
+  for (;;) {
+    const double ys = step < steps_.size() ? steps_[step].y : INFINITY;
+    const double ye = ie < ends_.size() ? ends_[ie].first : INFINITY;
+    const double yt = is < starts_.size() ? starts_[is].first : INFINITY;
+    const double yh = heap_.empty() ? INFINITY : heap_.front().y;
+    const double y = std::min(std::min(ys, ye), std::min(yt, yh));
+    if (y == INFINITY) break;
+    if (ys == y) {
       for (; step < steps_.size() && steps_[step].y == y; ++step) left_ += steps_[step].delta;
       rewalk(0, ord_.size(), y, sink);
+      continue;
+    }
+    if (ye == y || yt == y) {
+      // Every span ending, then every span starting at this height, then one re-walk of the
+      // windings over the stretch they touched [lo, hi] and on until the windings agree with
+      // the old ones again.
+      std::size_t lo = ord_.size(), hi = 0;
+      for (; ie < ends_.size() && ends_[ie].first == y; ++ie) {
+        const std::uint32_t id = ends_[ie].second;
+        Node& N = nodes_[id];
+        const std::size_t p = pos_[id];
+        if (N.sign != 0) emit(N.open_k, N.chain, N.open_y, y, N.sign, sink);
+        ord_.erase(ord_.begin() + static_cast<std::ptrdiff_t>(p));
+        for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
+        pos_[id] = kNone;
+        lo = std::min(lo, p);
+        if (p < hi) --hi;
+        hi = std::max(hi, p);
+      }
+      for (; is < starts_.size() && starts_[is].first == y; ++is) {
+        const std::uint32_t id = starts_[is].second;
+        Node& N = nodes_[id];
+        const double x = N.x(y);
+        const auto at = std::upper_bound(ord_.begin(), ord_.end(), id, [&](std::uint32_t a, std::uint32_t b) {
+          const Node &A = nodes_[a], &B = nodes_[b];
+          const double xb = B.x(y);
+          if (x != xb) return x < xb;
+          if (A.slope != B.slope) return A.slope < B.slope;
+          return a < b;
+        });
+        const std::size_t p = static_cast<std::size_t>(at - ord_.begin());
+        ord_.insert(at, id);
+        for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
+        N.sign = 0;
+        N.open_y = y;
+        N.open_k = N.k;
+        if (N.ny < N.tb) push_event(N.ny, kVertex, id);
+        if (p <= hi && lo <= hi) ++hi;
+        lo = std::min(lo, p);
+        hi = std::max(hi, p);
+      }
+      if (lo > hi) continue;
+      rewalk(lo, hi, y, sink);
+      for (std::size_t p = lo > 0 ? lo - 1 : 0; p <= hi && p < ord_.size(); ++p) check_pair(p, y);
       continue;
     }
     const Event e = heap_.front();
     std::pop_heap(heap_.begin(), heap_.end(), greater);
     heap_.pop_back();
-    const double y = e.y;
     if (e.type() == kCross) {
       const std::uint32_t a = e.node();
       if (pos_[a] == kNone || nodes_[a].stamp != e.stamp || pos_[a] + 1 >= ord_.size()) continue;
@@ -310,7 +378,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
       if (p > 0) check_pair(p - 1, y);
       check_pair(p, y);
       check_pair(p + 1, y);
-    } else if (e.type() == kVertex) {
+    } else {  // a vertex
       const std::uint32_t id = e.node();
       Node& N = nodes_[id];
       N.load(v, N.k + 1);
@@ -318,54 +386,11 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
       const std::size_t p = pos_[id];
       if (p > 0) check_pair(p - 1, y);
       check_pair(p, y);
-    } else {
-      // Every span ending or starting at this height, then one re-walk of the windings over the
-      // stretch they touched [lo, hi] and on until the windings agree with the old ones.
-      std::size_t lo = ord_.size(), hi = 0;
-      for (Event f = e;;) {
-        const std::uint32_t id = f.node();
-        Node& N = nodes_[id];
-        if (f.type() == kEnd) {
-          const std::size_t p = pos_[id];
-          if (N.sign != 0) emit(spans_[byx_[c0 + id]], N.open_y, y, N.sign, sink);
-          ord_.erase(ord_.begin() + static_cast<std::ptrdiff_t>(p));
-          for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
-          pos_[id] = kNone;
-          lo = std::min(lo, p);
-          if (p < hi) --hi;
-          hi = std::max(hi, p);
-        } else {
-          const double x = N.x(y);
-          const auto at = std::upper_bound(ord_.begin(), ord_.end(), id, [&](std::uint32_t a, std::uint32_t b) {
-            const Node &A = nodes_[a], &B = nodes_[b];
-            const double xb = B.x(y);
-            if (x != xb) return x < xb;
-            if (A.slope != B.slope) return A.slope < B.slope;
-            return a < b;
-          });
-          const std::size_t p = static_cast<std::size_t>(at - ord_.begin());
-          ord_.insert(at, id);
-          for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
-          N.sign = 0;
-          N.open_y = y;
-          if (N.ny < N.tb) push_event(N.ny, kVertex, id);
-          if (p <= hi && lo <= hi) ++hi;
-          lo = std::min(lo, p);
-          hi = std::max(hi, p);
-        }
-        if (heap_.empty() || heap_.front().y != y || heap_.front().type() > kStart) break;
-        f = heap_.front();
-        std::pop_heap(heap_.begin(), heap_.end(), greater);
-        heap_.pop_back();
-      }
-      if (lo > hi) continue;
-      rewalk(lo, hi, y, sink);
-      for (std::size_t p = lo > 0 ? lo - 1 : 0; p <= hi && p < ord_.size(); ++p) check_pair(p, y);
     }
   }
   for (const std::uint32_t id : ord_) {
     const Node& N = nodes_[id];
-    if (N.sign != 0) emit(spans_[byx_[c0 + id]], N.open_y, std::min(N.tb, y1), N.sign, sink);
+    if (N.sign != 0) emit(N.open_k, N.chain, N.open_y, std::min(N.tb, y1), N.sign, sink);
   }
 }
 
@@ -403,9 +428,10 @@ void StripSweep::set_status(std::uint32_t id, int w_left, double y, Sink& sink) 
   const bool before = (w_left & mask_) != 0, after = (N.w & mask_) != 0;
   const int sign = before == after ? 0 : (after ? 1 : -1);
   if (sign == N.sign) return;
-  if (N.sign != 0) emit(spans_[byx_[ic0_ + id]], N.open_y, y, N.sign, sink);
+  if (N.sign != 0) emit(N.open_k, N.chain, N.open_y, y, N.sign, sink);
   N.sign = sign;
   N.open_y = y;
+  N.open_k = N.k;
 }
 
 // Recomputes the windings from ord_[lo] on: through ord_[hi] at least, then until a span's
@@ -433,6 +459,23 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
   }
   build_spans(y0, y1);
   if (spans_.empty()) return true;
+  if (y1 - y0 > 1 && edges_ > kDenseEdgesPerRow * (y1 - y0) * static_cast<double>(spans_.size())) {
+    // Chains with many vertices per row: a strip a row high keeps most of them lone spans,
+    // which need no event queue; the union is the same whichever strips it is resolved in.
+    for (double y = y0; y < y1; y = std::min(y + 1, y1)) {
+      if (!update_active(y, std::min(y + 1, y1))) continue;
+      build_spans(y, std::min(y + 1, y1));
+      if (!spans_.empty()) sweep_spans(y, std::min(y + 1, y1), sink);
+    }
+    return true;
+  }
+  sweep_spans(y0, y1, sink);
+  return true;
+}
+
+// The spans of the strip, cluster by cluster from the left.
+template <class Sink>
+void StripSweep::sweep_spans(double y0, double y1, Sink& sink) {
   steps_.clear();
   base_ = 0;
   // Clusters left to right: a span joins the cluster while its x range overlaps the cluster's.
@@ -454,7 +497,6 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
     add_steps(c0, c1, y0, y1);
     c0 = c1;
   }
-  return true;
 }
 
 }  // namespace splinefig::render::detail
