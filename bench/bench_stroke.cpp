@@ -11,7 +11,8 @@
 // union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
 // memory/<workload>/<impl> reports the peak memory drawing adds to a process (counter
 // added_MB, measured in a forked child, bench/peak_memory.hpp) and what its input takes
-// (input_MB); splinefig on one thread and on all threads.
+// (input_MB); splinefig on one thread and on all threads, copying the points into its scene,
+// and on one thread handing them over (splinefig-moved: Scene::stroke_polyline(vector&&)).
 #include <oracle/union_coverage.hpp>
 #include <peak_memory.hpp>
 
@@ -165,6 +166,19 @@ splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize
   return sr::rasterize(s, threads);
 }
 
+// The same, handing the points over to the scene (the rvalue overload) instead of copying them.
+splinefig::Image draw_splinefig_moved(Workload&& w, int threads) {
+  sr::Scene s(kSize, kSize, {1, 1, 1, 1});
+  sr::StrokeStyle st;
+  st.width = w.width;
+  st.join = w.join;
+  st.cap = w.cap;
+  st.miter_limit = 4;
+  for (Path& p : w.paths) s.stroke_polyline(std::move(p.pts), false, st, {0, 0, 0, 1});
+  w.paths = {};
+  return sr::rasterize(s, threads);
+}
+
 // ---- Cairo -----------------------------------------------------------------------------
 struct CairoCanvas {
   cairo_surface_t* surface;
@@ -275,6 +289,9 @@ void BM_memory(benchmark::State& state, char id, int impl, int threads) {
       if (impl == 0) {
         splinefig::Image img = draw_splinefig(w, threads);
         benchmark::DoNotOptimize(img.pixels.data());
+      } else if (impl == 3) {
+        splinefig::Image img = draw_splinefig_moved(std::move(w), threads);
+        benchmark::DoNotOptimize(img.pixels.data());
       } else if (impl == 1) {
         CairoCanvas c;
         draw_cairo(c, w);
@@ -361,6 +378,7 @@ void register_all() {
     std::string base = std::string("memory/") + name + "/";
     benchmark::RegisterBenchmark((base + "splinefig").c_str(), BM_memory, id, 0, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_memory, id, 0, all)->Iterations(1)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "splinefig-moved").c_str(), BM_memory, id, 3, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_memory, id, 1, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_memory, id, 2, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
   }

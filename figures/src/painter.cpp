@@ -185,8 +185,7 @@ render::Scene scene_of(const Painter& p, int width, int height, Color background
         [&](const auto& o) {
           using T = std::decay_t<decltype(o)>;
           if constexpr (std::is_same_v<T, StrokeOp>) {
-            auto pts = scaled(o.points, s);
-            scene.stroke_polyline(pts, o.closed, scaled(o.style, s), o.color);
+            scene.stroke_polyline(scaled(o.points, s), o.closed, scaled(o.style, s), o.color);
           } else if constexpr (std::is_same_v<T, PathStrokeOp>) {
             scene.stroke_path(o.path.transformed(s, 0, 0, s, 0, 0), scaled(o.style, s), o.color);
           } else if constexpr (std::is_same_v<T, FillOp>) {

@@ -88,8 +88,7 @@ void bind_render(py::module_& m) {
       .def("polyline", [](render::Scene& s, const f64array& pts, bool closed, const std::array<float, 4>& color, double width,
                           const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes,
                           double dash_offset) {
-        const auto v = vec2s(pts);
-        s.stroke_polyline(v, closed, stroke_of(width, join, cap, miter_limit, std::move(dashes), dash_offset), color_of(color));
+        s.stroke_polyline(vec2s(pts), closed, stroke_of(width, join, cap, miter_limit, std::move(dashes), dash_offset), color_of(color));
       })
       .def("fill", [](render::Scene& s, const std::vector<f64array>& contours, const std::string& rule, const std::array<float, 4>& color) {
         std::vector<std::vector<Vec2>> cs;

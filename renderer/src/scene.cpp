@@ -98,6 +98,10 @@ Scene::~Scene() = default;
 const std::vector<Scene::Item>& Scene::items() const { return *items_; }
 
 void Scene::stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color) {
+  stroke_polyline(std::vector<Vec2>(points.begin(), points.end()), closed, style, color);
+}
+
+void Scene::stroke_polyline(std::vector<Vec2>&& points, bool closed, const StrokeStyle& style, Color color) {
   check_points(points, "stroke_polyline", "polyline");
   check_style(style, "stroke_polyline");
   check_color(color, "stroke_polyline");
@@ -111,7 +115,7 @@ void Scene::stroke_polyline(std::span<const Vec2> points, bool closed, const Str
   }
   Item it;
   it.kind = Item::Kind::Stroke;
-  it.contours.emplace_back(points.begin(), points.end());
+  it.contours.push_back(std::move(points));
   it.closed = closed;
   it.stroke = style;
   it.color = color;

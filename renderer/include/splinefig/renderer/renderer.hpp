@@ -94,6 +94,8 @@ class Scene {
   Scene(int width, int height, Color background = {1, 1, 1, 1}, Kernel filter = Kernel::box());
 
   void stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color);
+  // The same, taking the points over instead of copying them (a large polyline is not held twice).
+  void stroke_polyline(std::vector<Vec2>&& points, bool closed, const StrokeStyle& style, Color color);
   void fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color);
   void fill_circle(Vec2 centre, double radius, Color color);
   void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color);
