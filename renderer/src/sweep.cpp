@@ -35,7 +35,7 @@ void StripSweep::build_spans(double y0, double y1) {
   }
   pending_.clear();
   for (std::uint32_t i = 0; i < spans_.size(); ++i) pending_.push_back({spans_[i].xmin, i});
-  sort_small(pending_.begin(), pending_.end());
+  sort_small(pending_.begin(), pending_.end(), ByHeight{});
   byx_.resize(spans_.size());
   for (std::size_t i = 0; i < byx_.size(); ++i) byx_[i] = pending_[i].second;
 }
@@ -52,7 +52,14 @@ void StripSweep::add_steps(std::size_t c0, std::size_t c1, double y0, double y1)
     if (s.tb < y1) steps_.push_back({s.tb, -s.dir});
   }
   if (steps_.size() == n) return;
-  sort_small(steps_.begin(), steps_.end());
+  // The steps before n are sorted already: sort the new ones and merge.
+  sort_small(steps_.begin() + static_cast<std::ptrdiff_t>(n), steps_.end());
+  if (n > 0 && steps_[n].y < steps_[n - 1].y) {
+    merged_.resize(steps_.size());
+    std::merge(steps_.begin(), steps_.begin() + static_cast<std::ptrdiff_t>(n), steps_.begin() + static_cast<std::ptrdiff_t>(n),
+               steps_.end(), merged_.begin());
+    steps_.swap(merged_);
+  }
   std::size_t m = 0;
   for (std::size_t i = 0; i < steps_.size();) {
     Step st = steps_[i++];

@@ -29,11 +29,19 @@
 
 namespace splinefig::render::detail {
 
+// (height, index) pairs in increasing order: the same order as std::pair's, without its
+// three-way comparison of doubles.
+struct ByHeight {
+  bool operator()(const std::pair<double, std::uint32_t>& a, const std::pair<double, std::uint32_t>& b) const {
+    return a.first < b.first || (a.first == b.first && a.second < b.second);
+  }
+};
+
 // Sorts [first, last) by `less`; insertion sort for the few elements a strip usually has.
 template <class It, class Less = std::less<>>
 void sort_small(It first, It last, Less less = {}) {
   if (last - first < 2) return;
-  if (last - first > 16) {
+  if (last - first > 32) {
     std::sort(first, last, less);
     return;
   }
@@ -122,6 +130,7 @@ class StripSweep {
   std::size_t edges_ = 0;            // chain edges meeting the strip, over all spans
   std::vector<std::uint32_t> byx_;   // spans_ by xmin: clusters are runs of overlapping x ranges
   std::vector<Step> steps_;          // winding changes left of the current cluster, by y
+  std::vector<Step> merged_;         // scratch for add_steps
   int base_ = 0;                     // winding left of the current cluster at the strip's top
   std::vector<std::pair<double, std::uint32_t>> pending_;  // the spans by xmin
 
@@ -283,8 +292,8 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
     }
     if (s.tb < y1) ends_.push_back({s.tb, i});
   }
-  sort_small(starts_.begin(), starts_.end());
-  sort_small(ends_.begin(), ends_.end());
+  sort_small(starts_.begin(), starts_.end(), ByHeight{});
+  sort_small(ends_.begin(), ends_.end(), ByHeight{});
   // The order at the strip's top: by x, spans leaving one point by slope.
   std::sort(ord_.begin(), ord_.end(), [&](std::uint32_t a, std::uint32_t b) {
     const Node &A = nodes_[a], &B = nodes_[b];
