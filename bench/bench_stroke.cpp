@@ -7,6 +7,8 @@
 //           on the canvas (R1k, R10k, R30k: 10^3, 10^4, 3*10^4 points; the crossings grow as
 //           n^2), or a random walk with normal steps (sigma 8) reflected into the canvas (Rw100k,
 //           Rw1M: 10^5 and 10^6 points).
+// After the runs it prints the ratio table: splinefig's one-thread CPU time against Cairo's and
+// AGG's, and its wall-time speed-up on all threads, each marked where it misses its goal.
 // accuracy/<impl> renders random strokes and reports the coverage error against the exact
 // union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
 // memory/<workload>/<impl> reports the peak memory drawing adds to a process (counter
@@ -27,9 +29,13 @@
 #include <agg_rendering_buffer.h>
 #include <agg_scanline_u.h>
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 #include <cairo.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <cstdint>
 #include <map>
 #include <random>
@@ -389,10 +395,68 @@ void register_all() {
 
 }  // namespace
 
+// The console report, then the ratio table of the stroke workloads that ran: splinefig's
+// one-thread CPU time against Cairo's and AGG's (goals: 2x Cairo, 1.5x AGG), and its speed-up
+// on all threads in wall time (goal for B and C: 1.7x on 2 cores). With repetitions, the
+// medians are used.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  RatioReporter() : ConsoleReporter(isatty(fileno(stdout)) ? OO_Defaults : OO_Tabular) {}
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      if (r.error_occurred || (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median")) continue;
+      const std::string& name = r.run_name.function_name;  // stroke/<workload>/<impl>
+      if (name.rfind("stroke/", 0) != 0) continue;
+      const std::size_t slash = name.find('/', 7);
+      if (slash == std::string::npos) continue;
+      const std::string workload = name.substr(7, slash - 7), impl = name.substr(slash + 1);
+      if (std::find(order_.begin(), order_.end(), workload) == order_.end()) order_.push_back(workload);
+      times_[workload][impl] = {r.GetAdjustedCPUTime(), r.GetAdjustedRealTime()};
+    }
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    if (order_.empty()) return;
+    std::FILE* out = stdout;
+    std::fprintf(out, "\nsplinefig against the peers (1 thread, CPU ms; speed-up on %u threads, wall):\n",
+                 std::max(1u, std::thread::hardware_concurrency()));
+    std::fprintf(out, "%-8s %11s %11s %11s %9s %9s %9s\n", "workload", "splinefig", "cairo", "agg", "vs cairo",
+                 "vs agg", "threads");
+    auto cell = [&](const std::map<std::string, Times>& t, const char* impl, bool cpu) {
+      auto it = t.find(impl);
+      return it == t.end() ? -1.0 : (cpu ? it->second.cpu : it->second.real);
+    };
+    auto ratio = [](double a, double b, double goal) {
+      char buf[32];
+      if (a <= 0 || b <= 0) return std::string("-");
+      std::snprintf(buf, sizeof buf, "%.2fx%s", b / a, b / a >= goal ? "" : "*");
+      return std::string(buf);
+    };
+    for (const std::string& w : order_) {
+      const auto& t = times_[w];
+      const double sf = cell(t, "splinefig", true), ca = cell(t, "cairo", true), ag = cell(t, "agg", true);
+      const double sf_wall = cell(t, "splinefig", false), mt_wall = cell(t, "splinefig-mt", false);
+      const bool scaled = w == "B" || w == "C";
+      std::fprintf(out, "%-8s %11.1f %11.1f %11.1f %9s %9s %9s\n", w.c_str(), sf, ca, ag, ratio(sf, ca, 2).c_str(),
+                   ratio(sf, ag, 1.5).c_str(), ratio(mt_wall, sf_wall, scaled ? 1.7 : 0).c_str());
+    }
+    std::fprintf(out, "* below the goal (2x Cairo, 1.5x AGG; threads: 1.7x for B and C)\n");
+  }
+
+ private:
+  struct Times {
+    double cpu = -1, real = -1;
+  };
+  std::vector<std::string> order_;
+  std::map<std::string, std::map<std::string, Times>> times_;
+};
+
 int main(int argc, char** argv) {
   register_all();
   benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;
 }
