@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <vector>
 
 namespace splinefig::figures::detail {
 namespace {
@@ -110,11 +111,25 @@ std::vector<GeneratedPart> parts_of(const ZoneplateElement& e) {
   ResampleOptions opt;
   opt.edge = edge_of(e.edge);
   opt.interpolating = e.interpolating;
+  // The plate is symmetric under x -> n-1-x, y -> n-1-y and x <-> y, and d(n-1-x)^2 = d(x)^2
+  // exactly (d is a half-integer), so one octant is computed and mirrored: every pixel gets the
+  // value it would get on its own.
   Image src(n, n, 1);
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      const double dx = x + 0.5 - n / 2.0, dy = y + 0.5 - n / 2.0;
-      src.at(x, y, 0) = static_cast<float>(0.5 + 0.5 * std::cos(kPi * (dx * dx + dy * dy) / n));
+  std::vector<double> d2(static_cast<std::size_t>(n));
+  for (int x = 0; x < n; ++x) {
+    const double d = x + 0.5 - n / 2.0;
+    d2[static_cast<std::size_t>(x)] = d * d;
+  }
+  const int half = (n + 1) / 2;
+  for (int y = 0; y < half; ++y)
+    for (int x = y; x < half; ++x) {
+      const double r2 = d2[static_cast<std::size_t>(x)] + d2[static_cast<std::size_t>(y)];
+      const float v = static_cast<float>(0.5 + 0.5 * std::cos(kPi * r2 / n));
+      for (const int a : {x, n - 1 - x})
+        for (const int b : {y, n - 1 - y}) {
+          src.at(a, b, 0) = v;
+          src.at(b, a, 0) = v;
+        }
     }
   Image out;
   try {

@@ -30,6 +30,7 @@ void write_figure_file(const FigureScene& fig, const std::string& path, const st
   w.software = o.software;
   w.description = o.title;
   w.dpi = o.dpi > 0 ? o.dpi * o.scale : 0;
+  w.date = o.date;
   write_image(path, *raster, w);
 }
 

@@ -11,8 +11,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <limits>
+#include <string>
 
 namespace splinefig {
 namespace {
@@ -70,6 +72,18 @@ std::vector<T> integer_values(const Image& im) {
   return out;
 }
 
+// "YYYY:MM:DD HH:MM:SS" (TIFF and EXIF's form, in UTC) for seconds since 1970; "" when negative
+// or past year 9999.
+std::string exif_date(long long seconds) {
+  if (seconds < 0 || seconds > 253402300799LL) return "";
+  const std::time_t t = static_cast<std::time_t>(seconds);
+  std::tm tm{};
+  if (!gmtime_r(&t, &tm)) return "";
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y:%m:%d %H:%M:%S", &tm);
+  return buf;
+}
+
 }  // namespace
 
 void write_image(const std::string& path, const Image& im, const WriteOptions& options) {
@@ -105,6 +119,9 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   auto& text = spec.string_attributes;
   text.emplace_back("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
   if (!options.description.empty()) text.emplace_back("ImageDescription", options.description);
+  // OpenImageIO stamps EXR and TIFF files with the current time unless DateTime is given; an
+  // empty one writes none.
+  text.emplace_back("DateTime", exif_date(options.date));
   if (options.dpi > 0) {  // PNG pHYs, EXR and TIFF resolution attributes
     spec.float_attributes.emplace_back("XResolution", static_cast<float>(options.dpi));
     spec.float_attributes.emplace_back("YResolution", static_cast<float>(options.dpi));

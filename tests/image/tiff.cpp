@@ -115,3 +115,28 @@ TEST_CASE("TIFF with another bit depth is refused, naming the file, and nothing 
   CHECK(!std::filesystem::exists(tif));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("EXR and TIFF carry a DateTime only when one is given, so the same image gives the same bytes") {
+  const auto dir = scratch_dir("tiff-date");
+  auto date_of = [](const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    REQUIRE(in);
+    return in->spec().get_string_attribute("DateTime", "(none)");
+  };
+  auto bytes = [](const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+  };
+  for (const char* ext : {".exr", ".tif"}) {
+    const std::string a = (dir / (std::string("a") + ext)).string(), b = (dir / (std::string("b") + ext)).string();
+    WriteOptions w;
+    if (std::string(ext) == ".tif") w.bits = 32;
+    write_image(a, sample(), w);
+    CHECK(date_of(a) == "(none)");
+    write_image(b, sample(), w);
+    CHECK(bytes(a) == bytes(b));
+    w.date = 1700000000;  // 2023-11-14 22:13:20 UTC
+    write_image(b, sample(), w);
+    CHECK(date_of(b) == "2023:11:14 22:13:20");
+  }
+}

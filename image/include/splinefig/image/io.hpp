@@ -59,6 +59,9 @@ struct WriteOptions {
   std::string software;      // "splinefig <version>" when empty
   std::string description;   // ImageDescription, e.g. the spec name; none when empty
   double dpi = 0;            // pixels per inch (PNG pHYs, EXR/TIFF XResolution); none when 0
+  // The file's DateTime (EXR, TIFF) in seconds since 1970 UTC, e.g. SOURCE_DATE_EPOCH; none when
+  // negative, so that the same image always gives the same bytes.
+  long long date = -1;
 };
 
 // Writes `im` to `path`, the format chosen by the extension:
