@@ -1,5 +1,6 @@
 // Plot elements of an axes panel: curves, kernels, series, fills, text, annotations,
 // reference lines and images, mapped from data to pixels and clipped to the plot box.
+#include "clip_path.hpp"
 #include "plot.hpp"
 
 #include <splinefig/figures/palette.hpp>
@@ -58,10 +59,15 @@ void stroke_clipped(Painter& p, const std::vector<Vec2>& pts, bool closed, const
   for (auto& r : runs) p.stroke(std::move(r), false, st, c);
 }
 
-// Whether every control point of the path lies in the clip box: then so does the curve (a
-// Bezier lies in the convex hull of its control points) and it needs no clipping.
-bool inside(const render::Path& path, const Rect& clip) {
-  return std::all_of(path.points().begin(), path.points().end(), [&](Vec2 q) { return clip.contains(q); });
+// An exact path clipped to the box: whole when every control point lies in the box (then so
+// does the curve, a Bezier lying in the convex hull of its control points), else the parts
+// inside, each still exact (clip_path.hpp).
+void stroke_clipped(Painter& p, render::Path path, const render::StrokeStyle& st, Color c, const Rect& clip) {
+  if (std::all_of(path.points().begin(), path.points().end(), [&](Vec2 q) { return clip.contains(q); })) {
+    p.stroke(std::move(path), st, c);
+    return;
+  }
+  for (render::Path& part : clip_path(path, clip)) p.stroke(std::move(part), st, c);
 }
 
 // What every element's drawing shares: the panel, the painter, the occupancy grid, the
@@ -115,13 +121,13 @@ class ElementPainter {
     stroke_clipped(p, pts, closed, st, c, clip);
     occ.mark_polyline(pts, 0.5 * st.width + 1);
   }
-  // The exact path when it needs no clipping, else the polyline `pts` of the same curve.
+  // The exact path clipped to the box, else (no exact path) the polyline `pts` of the same curve.
   void stroke(const std::optional<render::Path>& path, const std::vector<Vec2>& pts, bool closed,
               const render::StrokeStyle& st, Color c) {
-    if (!path || !inside(*path, clip)) return stroke(pts, closed, st, c);
+    if (!path) return stroke(pts, closed, st, c);
     render::Path closed_path = *path;
     if (closed) closed_path.close();
-    p.stroke(std::move(closed_path), st, c);
+    stroke_clipped(p, std::move(closed_path), st, c, clip);
     occ.mark_polyline(pts, 0.5 * st.width + 1);
   }
   // A marker inside the clip box, marked as used.
@@ -196,10 +202,8 @@ void draw_kernel(const KernelElement& k, ElementPainter& d) {
     for (Vec2 q : piece)
       if (all.empty() || q.x != all.back().x || q.y != all.back().y) all.push_back(q);
   Color color = k.piece_colors.empty() ? d.pick(k.color) : k.piece_colors.back();
-  // The exact pieces when none needs clipping, else the polylines.
+  // The exact pieces clipped to the box, else (no exact pieces) the polylines.
   auto paths = kernel_paths(k.basis, s0, s1, k.scale, d.map);
-  if (paths && !std::all_of(paths->begin(), paths->end(), [&](const render::Path& q) { return inside(q, d.clip); }))
-    paths.reset();
   if (k.piece_colors.empty()) {
     if (paths) {
       render::Path whole;
@@ -217,14 +221,14 @@ void draw_kernel(const KernelElement& k, ElementPainter& d) {
           else if (const Vec2 cur = whole.points().back(); cur.x != to.x || cur.y != to.y) whole.line_to(to);
         }
       }
-      d.p.stroke(std::move(whole), k.stroke, color);
+      stroke_clipped(d.p, std::move(whole), k.stroke, color, d.clip);
     } else {
       stroke_clipped(d.p, all, false, k.stroke, color, d.clip);
     }
   } else {
     for (size_t i = 0; i < pieces.size(); ++i) {
       if (pieces[i].empty()) continue;
-      if (paths) d.p.stroke((*paths)[i], k.stroke, k.piece_colors[i]);
+      if (paths) stroke_clipped(d.p, (*paths)[i], k.stroke, k.piece_colors[i], d.clip);
       else stroke_clipped(d.p, pieces[i], false, k.stroke, k.piece_colors[i], d.clip);
     }
   }

@@ -54,8 +54,9 @@ TEST_CASE("a kernel in SVG is its four cubic pieces, not a polyline") {
 
 TEST_CASE("spline curves in SVG: one Bezier command per segment") {
   // ends: six knots; open ends give 6 - 3 = 3 segments, doubled 6 + 2 - 3 = 5, closed 6. The
-  // closed Catmull-Rom curve leaves its plot box, so it is clipped there as a polyline; the
-  // other five are exact.
+  // closed Catmull-Rom curve's control points leave its plot box (the tangent at (7, 3) is
+  // ((0, 0) - (6, 1)) / 2, so a control point is at x = 7 + 1 = 8 > 7.7), the curve does not
+  // (its x stays below 7.34): clipped, it is still its six pieces.
   std::vector<int> counts;
   for (const PathCounts& p : stroked_paths(svg_of("ends")))
     if (p.cubics > 0) {
@@ -63,7 +64,99 @@ TEST_CASE("spline curves in SVG: one Bezier command per segment") {
       counts.push_back(p.cubics);
     }
   std::sort(counts.begin(), counts.end());
-  CHECK(counts == std::vector<int>{3, 3, 5, 5, 6});
+  CHECK(counts == std::vector<int>{3, 3, 5, 5, 6, 6});
+}
+
+TEST_CASE("clipped curves in SVG are their Bezier pieces, not polylines") {
+  // Every stroked path of these figures is short: a curve is a few C commands, not hundreds of
+  // sampled points (axes, ticks, legend samples and polygons are a few lines each).
+  for (const std::string name : {"ends", "cbasis-a"}) {
+    INFO(name);
+    const std::string svg = svg_of(name);
+    const std::regex path("<path d=\"([^\"]*)\" fill=\"none\"");
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it)
+      CHECK((*it)[1].length() < 600);
+  }
+  // cbasis-a: the cardinal kernels C_a for a = 0, 0.25, 0.5, 0.75, 1, each four cubic pieces on
+  // [-2, 2] (for a = 0 the outer two are zero). The lobes of a = 0.75 and 1 have control points
+  // below the box (the piece -a u (1 - u)^2 has Bernstein coefficients 0, -a/3, 0, 0, and
+  // -a/3 < -0.2 = the y range's bottom), the curves themselves not (their minimum is -4a/27).
+  std::vector<PathCounts> kernels;
+  for (const PathCounts& p : stroked_paths(svg_of("cbasis-a")))
+    if (p.cubics > 0) kernels.push_back(p);
+  REQUIRE(kernels.size() == 5);
+  for (const PathCounts& k : kernels) {
+    CHECK(k.cubics == 4);
+    CHECK(k.lines == 0);
+  }
+}
+
+TEST_CASE("a curve or kernel leaving its plot box is clipped there as Bezier pieces") {
+  // The closed Catmull-Rom curve of `ends` (its y runs from -0.01 to 3.01) in two panels. With
+  // y in [0.2, 2.8] it starts outside, at (0, 0): it enters in piece 0 (t ~ 0.26), leaves in
+  // piece 4 (t ~ 0.74) and crosses the box again within piece 5 (t ~ 0.14 to 0.86): two parts,
+  // of 5 pieces (the ends of 0 and 4, all of 1 to 3) and 1. With y in [-0.5, 2.8] it starts
+  // inside and leaves only within pieces 4 and 5: one part, open, from piece 5 through piece 4.
+  // The Catmull-Rom kernel with y in [-0.05, 1.1]: its lobes (minimum -2/27 at s = -4/3 and 4/3)
+  // dip below the box, each within its piece: three parts, of 1, 4 and 1 pieces.
+  const std::string spec = R"(
+[canvas]
+width = 1200
+height = 400
+[layout]
+cols = 3
+[[axes]]
+x_range = [-0.6, 7.7]
+y_range = [0.2, 2.8]
+cell = [0, 0]
+[[axes.curve]]
+knots = [[0, 0], [1, 2], [3, 2.5], [4, 0.5], [6, 1], [7, 3]]
+basis = "catmull-rom"
+ends = "closed"
+color = "#1f77b4"
+[[axes]]
+x_range = [-0.6, 7.7]
+y_range = [-0.5, 2.8]
+cell = [0, 1]
+[[axes.curve]]
+knots = [[0, 0], [1, 2], [3, 2.5], [4, 0.5], [6, 1], [7, 3]]
+basis = "catmull-rom"
+ends = "closed"
+color = "#d62728"
+[[axes]]
+x_range = [-2, 2]
+y_range = [-0.05, 1.1]
+cell = [0, 2]
+[[axes.kernel]]
+basis = "catmull-rom"
+color = "#2ca02c"
+)";
+  const std::string svg = splinefig::vector::to_svg(fig::figure_scene(fig::parse_spec(spec, "clipped"), 1).scene);
+  auto parts = [&](const std::string& colour) {
+    std::vector<std::string> out;
+    const std::regex path("<path d=\"([^\"]*)\" fill=\"none\" stroke=\"" + colour + "\"");
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it)
+      out.push_back((*it)[1]);
+    return out;
+  };
+  auto count = [](const std::string& d, char c) { return std::count(d.begin(), d.end(), c); };
+  const auto blue = parts("#1f77b4");
+  REQUIRE(blue.size() == 2);
+  CHECK(count(blue[0], 'C') == 5);
+  CHECK(count(blue[1], 'C') == 1);
+  const auto red = parts("#d62728");
+  REQUIRE(red.size() == 1);
+  CHECK(count(red[0], 'C') == 6);
+  const auto green = parts("#2ca02c");
+  REQUIRE(green.size() == 3);
+  CHECK(count(green[0], 'C') == 1);
+  CHECK(count(green[1], 'C') == 4);
+  CHECK(count(green[2], 'C') == 1);
+  for (const std::string& d : {blue[0], blue[1], red[0], green[0], green[1], green[2]}) {
+    CHECK(count(d, 'L') == 0);
+    CHECK(count(d, 'M') == 1);
+    CHECK(count(d, 'Z') == 0);
+  }
 }
 
 TEST_CASE("SVG keeps each label's string next to its outline") {
