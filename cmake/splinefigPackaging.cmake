@@ -30,7 +30,7 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # What building against the libraries needs (their CMake package finds these), and the
 # test matchers' frameworks.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
-  "libopenimageio-dev, zlib1g-dev, libtomlplusplus-dev, nlohmann-json3-dev, python3-imath")
+  "libopenimageio-dev, zlib1g-dev, libpng-dev, libtomlplusplus-dev, nlohmann-json3-dev, python3-imath")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "catch2, libgtest-dev, libgmock-dev, pkg-config")
 set(CPACK_STRIP_FILES ON)
 include(CPack)

@@ -9,7 +9,10 @@
 #include <condition_variable>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <mutex>
+#include <string>
 #include <system_error>
 #include <thread>
 
@@ -53,6 +56,24 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
   return result;
 }
 
+// Whether the batch may load the image I/O module: a format other than those written without it
+// (PNG by libpng, SVG, PDF), or a spec that may name an image file (a `file =` key, as the
+// image elements have; a false alarm only loads the module early).
+bool needs_image_io(const std::vector<SpecFile>& specs, const BatchOptions& o) {
+  for (const auto& f : o.formats)
+    if (f != "png" && f != "svg" && f != "pdf") return true;
+  for (const SpecFile& s : specs) {
+    std::ifstream in(s.path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    for (std::size_t k = text.find("file"); k != std::string::npos; k = text.find("file", k + 4)) {
+      std::size_t j = k + 4;
+      while (j < text.size() && (text[j] == ' ' || text[j] == '\t')) ++j;
+      if (j < text.size() && text[j] == '=') return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
@@ -73,9 +94,9 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
       ready.notify_all();
     }
   };
-  // The image I/O module first: a library it loads starts threads of its own when loaded, and
-  // under a thread limit those must not find the budget taken by the workers.
-  preload_image_io();
+  // The image I/O module first, if the batch may use it: a library it loads starts threads of its
+  // own when loaded, and under a thread limit those must not find the budget taken by the workers.
+  if (needs_image_io(specs, options)) preload_image_io();
   // Workers the system refuses (RLIMIT_NPROC, memory): the specs go to those that started, or
   // are rendered on this thread if none did.
   std::vector<std::thread> pool;

@@ -7,6 +7,7 @@
 #include "one_line.hpp"
 
 #include "codec.hpp"
+#include "png_encode.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +103,9 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   if (im.width < 1 || im.height < 1 || im.channels < 1 ||
       im.pixels.size() != std::size_t(im.width) * std::size_t(im.height) * std::size_t(im.channels))
     unwritable(path, "image has no pixels or a wrong buffer size");
+  if (im.alpha_channel < -1 || im.alpha_channel >= im.channels)
+    unwritable(path, "alpha channel " + std::to_string(im.alpha_channel) + " is not one of the image's " +
+                         std::to_string(im.channels) + " channels (or -1 for none)");
   if (png && im.channels > 4)
     unwritable(path, "PNG holds 1 to 4 channels; this image has " + std::to_string(im.channels));
   if (png && options.bits != 8 && options.bits != 16)
@@ -114,7 +118,7 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   spec.x = im.x;
   spec.y = im.y;
   if (int(im.channel_names.size()) == im.channels) spec.channel_names = im.channel_names;
-  spec.alpha_channel = im.alpha_channel < im.channels ? im.alpha_channel : -1;
+  spec.alpha_channel = im.alpha_channel;
   spec.type = floats ? detail::CodecType::f32 : options.bits == 16 ? detail::CodecType::u16 : detail::CodecType::u8;
   auto& text = spec.string_attributes;
   text.emplace_back("Software", options.software.empty() ? std::string("splinefig ") + SPLINEFIG_VERSION : options.software);
@@ -160,15 +164,20 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
     }
   }
 
-  const detail::ImageCodec* codec = nullptr;
-  try {
-    codec = &detail::image_codec();
-  } catch (const std::exception& e) {
-    unwritable(path, e.what());
-  }
   std::vector<unsigned char> file;
   std::string error;
-  if (!codec->encode(path.c_str(), spec, file, error)) unwritable(path, one_line(error));
+  if (png) {
+    // libpng directly: writing a PNG does not load the image I/O module.
+    if (!detail::encode_png(spec, file, error)) unwritable(path, one_line(error));
+  } else {
+    const detail::ImageCodec* codec = nullptr;
+    try {
+      codec = &detail::image_codec();
+    } catch (const std::exception& e) {
+      unwritable(path, e.what());
+    }
+    if (!codec->encode(path.c_str(), spec, file, error)) unwritable(path, one_line(error));
+  }
   try {
     write_file_atomically(path, file);
   } catch (const UnwritableFile& e) {

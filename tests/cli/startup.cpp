@@ -106,13 +106,28 @@ TEST_CASE("commands that touch no image file do not load the image I/O module") 
     CHECK_FALSE(l.objects.empty());
     CHECK_FALSE(has(l.objects, "splinefig_image_oiio"));
   }
-  // The check can see the module: writing a PNG loads it.
+  // The check can see the module: writing an EXR loads it.
   const fs::path dir = scratch("write");
   const Loaded w = loaded_by({"render", std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/cbasis.toml", "-o",
-                              (dir / "cbasis.png").string()});
+                              (dir / "cbasis.exr").string()});
   CHECK(w.run.code == 0);
   CHECK(has(w.objects, "splinefig_image_oiio"));
   CHECK(has(w.objects, "libOpenImageIO.so"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("writing PNG figures does not load the image I/O module: libpng encodes them") {
+  const fs::path dir = scratch("write-png");
+  const Loaded r = loaded_by({"render", std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/cbasis.toml", "-o",
+                              (dir / "cbasis.png").string()});
+  CHECK(r.run.code == 0);
+  CHECK(fs::exists(dir / "cbasis.png"));
+  CHECK_FALSE(has(r.objects, "splinefig_image_oiio"));
+  CHECK_FALSE(has(r.objects, "libOpenImageIO"));
+  const Loaded f = loaded_by({"figures", "--only", "cbasis,bias", "--out", (dir / "figs").string()});
+  CHECK(f.run.code == 0);
+  CHECK(fs::exists(dir / "figs" / "bias.png"));
+  CHECK_FALSE(has(f.objects, "splinefig_image_oiio"));
   fs::remove_all(dir);
 }
 
@@ -135,13 +150,13 @@ TEST_CASE("a missing image I/O module is a one-line error that writes nothing") 
   const fs::path dir = scratch("missing");
   ::setenv("SPLINEFIG_IMAGE_MODULE", (dir / "no-such-module.so").c_str(), 1);
   const Run r = run({"render", std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/cbasis.toml", "-o",
-                     (dir / "cbasis.png").string()});
+                     (dir / "cbasis.exr").string()});
   ::unsetenv("SPLINEFIG_IMAGE_MODULE");
   CHECK(r.code != 0);
   CHECK(count_lines(r.err) == 1);
   CHECK(r.err.find("cannot find the image I/O module") != std::string::npos);
   CHECK(r.err.find((dir / "no-such-module.so").string()) != std::string::npos);
-  CHECK_FALSE(fs::exists(dir / "cbasis.png"));
+  CHECK_FALSE(fs::exists(dir / "cbasis.exr"));
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 0);
   fs::remove_all(dir);
 }

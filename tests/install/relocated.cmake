@@ -21,12 +21,13 @@ foreach(spec ${installed})
   endif()
 endforeach()
 execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=SPLINEFIG_SPECS_DIR LD_DEBUG=files
-    ${MOVED}/bin/splinefig figures --out ${WORK_DIR}/out
+    ${MOVED}/bin/splinefig figures --format png,exr --out ${WORK_DIR}/out
   WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(rc)
   message(FATAL_ERROR "the moved splinefig figures failed: ${rc}\n${out}${err}")
 endif()
-# It wrote its PNG through the moved install's image I/O module, found next to its own bin/.
+# It wrote its EXR through the moved install's image I/O module, found next to its own bin/
+# (PNG is written by libpng, without the module).
 expect_image_module_from("${err}" ${MOVED}/${LIBDIR}/splinefig)
 string(REGEX REPLACE "[^\n]*[0-9]+:\t[^\n]*\n" "" err "${err}")  # the loader's lines
 file(GLOB drawn RELATIVE ${WORK_DIR}/out ${WORK_DIR}/out/*.png)
@@ -39,7 +40,7 @@ message(STATUS "the moved install drew ${drawn} from ${specs}")
 # something is installed at the configured prefix, its last resort).
 file(REMOVE_RECURSE ${specs})
 execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=SPLINEFIG_SPECS_DIR
-    ${MOVED}/bin/splinefig figures --out ${WORK_DIR}/out2
+    ${MOVED}/bin/splinefig figures --format png,exr --out ${WORK_DIR}/out2
   WORKING_DIRECTORY ${WORK_DIR} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 file(REMOVE_RECURSE ${MOVED})
 if(NOT EXISTS ${INSTALLED_SPECS_DIR})
