@@ -39,6 +39,11 @@ void check_finite(double v, const char* call, const char* name) {
 }
 
 void check_points(std::span<const Vec2> pts, const char* call, const char* name) {
+  // One pass without branches (|v| <= limit is false for NaN and infinities too); the point to
+  // blame is looked for only when there is one.
+  bool all_ok = true;
+  for (const Vec2& p : pts) all_ok &= (std::abs(p.x) <= kMaxCoordinate) & (std::abs(p.y) <= kMaxCoordinate);
+  if (all_ok) return;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (!std::isfinite(pts[i].x) || !std::isfinite(pts[i].y))
       bad(std::string(call) + ": " + name + " point " + std::to_string(i) + " is not finite (" + num(pts[i].x) +
