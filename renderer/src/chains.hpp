@@ -7,6 +7,11 @@
 // The winding number of a point is the sum of dir over the chains that cross the horizontal
 // ray to its left, so the chains carry everything the fill rules need.
 //
+// A contour may also come in open pieces (move_to, line_to, leave_open), each starting where
+// another ends, that together run around it: every edge is then added exactly once, as by the
+// whole contour, and the chains merely split where the pieces meet (the sweep treats that like
+// any two chains meeting at a vertex). A long stroke's outline is built so (stroke.hpp).
+//
 // Clipping happens here, once: x is projected onto [clip.x0, clip.x1] (an edge leaving the box
 // sideways is split where it crosses the side and continues along the side: the area to the
 // right of it inside the box is unchanged), and y is cut to [clip.y0, clip.y1]. So coordinates
@@ -52,6 +57,9 @@ class ChainBuilder {
     if (v.capacity() < v.size() + n) reserve_huge(v, std::max(2 * v.capacity(), v.size() + n));
   }
   void close();
+  // Ends the current contour without its closing edge: a piece of a contour that other pieces
+  // complete.
+  void leave_open();
   const Box& clip() const { return clip_; }  // in input coordinates when shift is zero
 
  private:
