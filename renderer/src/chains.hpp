@@ -20,6 +20,9 @@
 #include "huge_pages.hpp"
 
 #include <cstddef>
+#include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace splinefig::render::detail {
@@ -30,8 +33,33 @@ struct Chain {
   double ymin = 0, ymax = 0, xmin = 0, xmax = 0;
 };
 
+// Vertex storage whose resize() leaves the new vertices unwritten (Vec2 is an implicit-lifetime
+// aggregate; every vertex is written before it is read). A long stroke's outline is assembled
+// so: the array is sized once, then each thread copies its pieces into place, and the memory
+// is first touched (and zeroed by the system) by those threads, not by one thread beforehand.
+template <class T>
+struct UnwrittenOnResize : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UnwrittenOnResize<U>;
+  };
+  UnwrittenOnResize() = default;
+  template <class U>
+  UnwrittenOnResize(const UnwrittenOnResize<U>&) noexcept {}
+  template <class U>
+  void construct(U*) noexcept {
+    static_assert(std::is_trivially_copyable_v<U> && std::is_trivially_destructible_v<U>);
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+using Vertices = std::vector<Vec2, UnwrittenOnResize<Vec2>>;
+
 struct Geometry {
-  std::vector<Vec2> verts;
+  Vertices verts;
   std::vector<Chain> chains;
 };
 

@@ -96,8 +96,8 @@ Image rasterize(const Scene& scene, int threads) {
 
   Geometry geom;
   const auto& items = scene.items();
-  auto prepare = [&](std::size_t i, Prepared& p, Geometry& into) {
-    prepare_item(items[i], shift, clip, into, p, W, H);
+  auto prepare = [&](std::size_t i, Prepared& p, Geometry& into, int item_threads) {
+    prepare_item(items[i], shift, clip, into, p, W, H, item_threads);
     if (p.raster || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
@@ -124,7 +124,7 @@ Image rasterize(const Scene& scene, int threads) {
       geom.verts.clear();
       geom.chains.clear();
       p = Prepared{};
-      prepare(i, p, geom);
+      prepare(i, p, geom, 1);
       if (p.row1 <= p.row0) continue;
       if (p.raster) {
         composite_raster(*p.raster, img, 0, H);
@@ -141,7 +141,9 @@ Image rasterize(const Scene& scene, int threads) {
   // Items are prepared by the threads too: in runs of consecutive items, each run into a
   // geometry of its own. An item's chains and vertices are the same in any run (they are
   // appended in order and only their relative order matters), so the bytes do not depend on
-  // how items fall into runs.
+  // how items fall into runs. A long stroke's outline is built in pieces by its preparer and
+  // helper threads it starts (prepare.hpp); while other runs are being prepared too, the
+  // threads outnumber the cores for that while, which costs a little time and no bytes.
   std::vector<Prepared> prep;
   reserve_huge(prep, items.size());
   prep.resize(items.size());
@@ -161,7 +163,7 @@ Image rasterize(const Scene& scene, int threads) {
           const std::size_t r = next_run.fetch_add(1);
           if (r >= runs) return;
           for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i)
-            prepare(i, prep[i], geoms[r]);
+            prepare(i, prep[i], geoms[r], nthreads);
         }
       } catch (...) {  // rethrown on this thread once every preparer has stopped
         std::lock_guard<std::mutex> lock(failure_mutex);
