@@ -76,18 +76,21 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
 Image rasterize(const Scene& scene, int threads) {
   using namespace detail;
   const int W = scene.width(), H = scene.height();
-  Image img(0, 0, 4);  // RGBA; the pixels, written once below, get huge-page advice first
+  Image img(0, 0, 4);  // RGBA; the pixels get huge-page advice before they are first written
   img.width = W;
   img.height = H;
   reserve_huge(img.pixels, static_cast<std::size_t>(W) * H * 4);
   img.pixels.resize(static_cast<std::size_t>(W) * H * 4);
   const Color bg = scene.background_;
-  for (std::size_t i = 0; i < img.pixels.size(); i += 4) {
-    img.pixels[i] = bg.r * bg.a;
-    img.pixels[i + 1] = bg.g * bg.a;
-    img.pixels[i + 2] = bg.b * bg.a;
-    img.pixels[i + 3] = bg.a;
-  }
+  auto clear_rows = [&](int r0, int r1) {  // to the background
+    const std::size_t end = static_cast<std::size_t>(r1) * W * 4;
+    for (std::size_t i = static_cast<std::size_t>(r0) * W * 4; i < end; i += 4) {
+      img.pixels[i] = bg.r * bg.a;
+      img.pixels[i + 1] = bg.g * bg.a;
+      img.pixels[i + 2] = bg.b * bg.a;
+      img.pixels[i + 3] = bg.a;
+    }
+  };
 
   const bool box = exact_area(scene.filter_);
   FilterGrid grid = box ? FilterGrid{} : make_filter_grid(scene.filter_, W, H);
@@ -115,6 +118,7 @@ Image rasterize(const Scene& scene, int threads) {
     // cache and memory holds one item at a time. Every row is computed exactly as in the band
     // schedule below (a strip's result does not depend on where its band starts, and filtered
     // items are drawn band by band with the same band boundaries): identical bytes.
+    clear_rows(0, H);
     BoxBand band;
     band.reset(W, kBandRows);
     FilterScratch fs;
@@ -198,6 +202,7 @@ Image rasterize(const Scene& scene, int threads) {
       const int b = next.fetch_add(1);
       if (b >= bands) return;
       const int r0 = b * kBandRows, r1 = std::min(H, r0 + kBandRows);
+      clear_rows(r0, r1);  // by the band's thread, like everything else in its rows
       for (std::uint32_t i : band_items[static_cast<std::size_t>(b)]) {
         const Prepared& p = prep[i];
         const Geometry& g = geoms[run_of[i]];
