@@ -48,7 +48,7 @@ void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& s
 // Repeated consecutive points carry no direction and are dropped, as stroke_outline does; a
 // piece finds them among its own points (so that no thread scans the whole path first), and
 // the stroke is then cut again without them.
-inline constexpr std::size_t kOutlinePiecePoints = std::size_t{1} << 16;
+inline constexpr std::size_t kOutlinePiecePoints = std::size_t{1} << 15;
 class OutlinePieces {
  public:
   // No pieces (size() == 0) unless the stroke is open, has no dashes and more than two pieces'

@@ -1,4 +1,4 @@
-// Long strokes, whose outline is built in pieces of 2^16 points (renderer/src/stroke.hpp:
+// Long strokes, whose outline is built in pieces of 2^15 points (renderer/src/stroke.hpp:
 // OutlinePieces): the same bytes for any thread count, and the exact union's coverage where the
 // pieces meet, at a sharp turn and at a self-crossing.
 #include "coverage_helpers.hpp"
@@ -13,7 +13,7 @@ namespace sr = splinefig::render;
 
 namespace {
 
-constexpr std::size_t kPiece = std::size_t{1} << 16;  // points per outline piece
+constexpr std::size_t kPiece = std::size_t{1} << 15;  // points per outline piece (kOutlinePiecePoints)
 
 // Appends `steps` points on the line from pts.back() to `to`, the last one exactly `to`, moved
 // off the line by wiggle * sin(...) (a dense, gently turning path).
@@ -31,22 +31,22 @@ void line_to(std::vector<oracle::P2>& pts, oracle::P2 to, std::size_t steps, dou
   }
 }
 
-// A path of 2^17 + 1200 points on a 40 x 40 canvas whose bulk lies outside it: point 2^16 is a
-// sharp turn T on the canvas, and point 2^17 is X, where the path crosses its earlier pass
-// through X (a vertex of both passes, the passes at right angles).
+// A path of 2^16 + 1200 points on a 40 x 40 canvas whose bulk lies outside it: point 2^15 (a
+// piece boundary) is a sharp turn T on the canvas, and point 2^16 (the next one) is X, where the
+// path crosses its earlier pass through X (a vertex of both passes, at right angles).
 std::vector<oracle::P2> crossing_path() {
   const oracle::P2 T{20, 24}, X{24, 16};
   std::vector<oracle::P2> p{{5, 5}, {8, 3}};
   line_to(p, {10, -8}, 4);                    // up, off the canvas
   line_to(p, {36, -8}, kPiece - 7 - p.size(), 0.6);  // dense, above it
   line_to(p, {36, 2}, 4);
-  line_to(p, T, 4);                           // down to the turn: point 2^16
+  line_to(p, T, 4);                           // down to the turn: point 2^15
   line_to(p, {28, 8}, 8);                     // sharply back up, through X = (24, 16) (step 4)
   line_to(p, {34, 50}, 6);                    // off the canvas, below it
   line_to(p, {6, 50}, 2 * kPiece - 11 - p.size(), 0.6);
   line_to(p, {16, 12}, 10);
   line_to(p, {20, 14}, 1);
-  line_to(p, X, 1);                           // point 2^17, across the first pass
+  line_to(p, X, 1);                           // point 2^16, across the first pass
   line_to(p, {28, 18}, 1);
   line_to(p, {50, 30}, 6);                    // off the canvas, to the right
   line_to(p, {50, 6}, 1100, 0.6);
@@ -105,7 +105,7 @@ TEST_CASE("long strokes: pieces meeting at a sharp turn and at a self-crossing k
 }
 
 TEST_CASE("long strokes: byte-identical for any thread count, under the box and the tent filter") {
-  // A self-crossing Lissajous of 200,001 points (four outline pieces), one with repeated points
+  // A self-crossing Lissajous of 200,001 points (seven outline pieces), one with repeated points
   // (dropped before the outline is cut), and short items around them.
   std::vector<sr::Vec2> curve, repeats;
   for (int k = 0; k <= 200000; ++k) {
