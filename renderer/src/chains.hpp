@@ -37,6 +37,8 @@ struct Chain {
 // aggregate; every vertex is written before it is read). A long stroke's outline is assembled
 // so: the array is sized once, then each thread copies its pieces into place, and the memory
 // is first touched (and zeroed by the system) by those threads, not by one thread beforehand.
+// (splinefig::UninitializedAllocator, image.hpp, default-initializes, which zeroes a Vec2: its
+// members have initializers.)
 template <class T>
 struct UnwrittenOnResize : std::allocator<T> {
   template <class U>
