@@ -3,7 +3,7 @@
 // purpose: the caller takes them from the front, the helpers from the back, until they meet.
 // The caller's items are then a prefix [0, m), which it may have written straight into their
 // final place (a long stroke's outline pieces, appended in order), while the helpers' items
-// are kept aside until the caller places them after its own.
+// are kept aside until they can be placed after the caller's.
 #include <cstddef>
 #include <exception>
 #include <mutex>
