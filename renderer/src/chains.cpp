@@ -18,6 +18,11 @@ void ChainBuilder::close() {
   open_contour_ = false;
 }
 
+void ChainBuilder::leave_open() {
+  end_chain();
+  open_contour_ = false;
+}
+
 void ChainBuilder::line_to_slow(Vec2 b) {
   if (!open_contour_) {
     start_ = cur_;

@@ -7,6 +7,11 @@
 // The winding number of a point is the sum of dir over the chains that cross the horizontal
 // ray to its left, so the chains carry everything the fill rules need.
 //
+// A contour may also come in open pieces (move_to, line_to, leave_open), each starting where
+// another ends, that together run around it: every edge is then added exactly once, as by the
+// whole contour, and the chains merely split where the pieces meet (the sweep treats that like
+// any two chains meeting at a vertex). A long stroke's outline is built so (stroke.hpp).
+//
 // Clipping happens here, once: x is projected onto [clip.x0, clip.x1] (an edge leaving the box
 // sideways is split where it crosses the side and continues along the side: the area to the
 // right of it inside the box is unchanged), and y is cut to [clip.y0, clip.y1]. So coordinates
@@ -15,6 +20,9 @@
 #include "huge_pages.hpp"
 
 #include <cstddef>
+#include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace splinefig::render::detail {
@@ -25,8 +33,35 @@ struct Chain {
   double ymin = 0, ymax = 0, xmin = 0, xmax = 0;
 };
 
+// Vertex storage whose resize() leaves the new vertices unwritten (Vec2 is an implicit-lifetime
+// aggregate; every vertex is written before it is read). A long stroke's outline is assembled
+// so: the array is sized once, then each thread copies its pieces into place, and the memory
+// is first touched (and zeroed by the system) by those threads, not by one thread beforehand.
+// (splinefig::UninitializedAllocator, image.hpp, default-initializes, which zeroes a Vec2: its
+// members have initializers.)
+template <class T>
+struct UnwrittenOnResize : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UnwrittenOnResize<U>;
+  };
+  UnwrittenOnResize() = default;
+  template <class U>
+  UnwrittenOnResize(const UnwrittenOnResize<U>&) noexcept {}
+  template <class U>
+  void construct(U*) noexcept {
+    static_assert(std::is_trivially_copyable_v<U> && std::is_trivially_destructible_v<U>);
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+using Vertices = std::vector<Vec2, UnwrittenOnResize<Vec2>>;
+
 struct Geometry {
-  std::vector<Vec2> verts;
+  Vertices verts;
   std::vector<Chain> chains;
 };
 
@@ -52,6 +87,9 @@ class ChainBuilder {
     if (v.capacity() < v.size() + n) reserve_huge(v, std::max(2 * v.capacity(), v.size() + n));
   }
   void close();
+  // Ends the current contour without its closing edge: a piece of a contour that other pieces
+  // complete.
+  void leave_open();
   const Box& clip() const { return clip_; }  // in input coordinates when shift is zero
 
  private:

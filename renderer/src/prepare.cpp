@@ -1,8 +1,11 @@
 #include "prepare.hpp"
 
+#include "huge_pages.hpp"
+#include "parallel.hpp"
 #include "stroke.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace splinefig::render::detail {
@@ -31,15 +34,67 @@ void marker_contour(Marker m, Vec2 c, double s, ChainBuilder& out) {
 bool single_segment(const std::vector<Vec2>& p, bool closed) {
   if (closed) return false;
   std::size_t distinct = 0;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < p.size() && distinct <= 2; ++i)  // a third distinct point decides
     if (i == 0 || !(p[i].x == p[i - 1].x && p[i].y == p[i - 1].y)) ++distinct;
   return distinct <= 2;
+}
+
+// Appends a long stroke's outline pieces to g in piece order. This thread builds them from the
+// first on straight into g, as it does alone; helpers on the other threads build them from the
+// last on, each into a geometry of its own, which is then appended (its chains' vertex indices
+// moved with it): the same vertices and chains for any number of threads. If some piece finds
+// repeated points, g is put back and the stroke cut again without them; false, with g as it
+// was, when too few points are left for pieces.
+bool outline_in_pieces(OutlinePieces& pieces, Geometry& g, const Box& clip, Vec2 shift, int threads) {
+  const std::size_t verts0 = g.verts.size(), chains0 = g.chains.size();
+  for (;;) {
+    reserve_huge(g.verts, verts0 + 3 * pieces.points() + 64);  // as stroke_outline would
+    std::vector<Geometry> parts(threads > 1 ? pieces.size() : 0);
+    std::atomic<bool> repeats{false};
+    std::vector<std::size_t> vert0(pieces.size() + 1), chain0(pieces.size() + 1);  // where parts go
+    auto build = [&](std::size_t k, Geometry& into) {
+      ChainBuilder b(into, clip, shift);
+      if (!repeats && !pieces.build(k, b)) repeats = true;
+    };
+    auto place = [&](std::size_t k) {
+      std::copy(parts[k].verts.begin(), parts[k].verts.end(), g.verts.begin() + static_cast<std::ptrdiff_t>(vert0[k]));
+      Chain* c = g.chains.data() + chain0[k];
+      for (const Chain& pc : parts[k].chains) {
+        *c = pc;
+        c->first += vert0[k];
+        c->last += vert0[k];
+        ++c;
+      }
+      parts[k] = Geometry{};
+    };
+    const std::size_t mine = split_from_both_ends(
+        threads, pieces.size(), [&](std::size_t k) { build(k, g); }, [&](std::size_t k) { build(k, parts[k]); });
+    if (repeats) {
+      g.verts.resize(verts0);
+      g.chains.resize(chains0);
+      pieces.drop_repeats();
+      if (pieces.size() == 0) return false;
+      continue;
+    }
+    // The helpers' pieces move to their places in g, each copied by one of the threads.
+    vert0[mine] = g.verts.size();
+    chain0[mine] = g.chains.size();
+    for (std::size_t k = mine; k < pieces.size(); ++k) {
+      vert0[k + 1] = vert0[k] + parts[k].verts.size();
+      chain0[k + 1] = chain0[k] + parts[k].chains.size();
+    }
+    g.verts.resize(vert0[pieces.size()]);  // unwritten: the copies below write them
+    g.chains.resize(chain0[pieces.size()]);
+    auto place_helpers = [&](std::size_t i) { place(mine + i); };
+    split_from_both_ends(threads, pieces.size() - mine, place_helpers, place_helpers);
+    return true;
+  }
 }
 
 }  // namespace
 
 void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& g, Prepared& out, int /*canvas_w*/,
-                  int canvas_h) {
+                  int canvas_h, int threads) {
   using K = Scene::Item::Kind;
   const float a = it.color.a;
   out.color[0] = it.color.r * a;
@@ -61,7 +116,9 @@ void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& 
   switch (it.kind) {
     case K::Stroke: {
       const std::vector<Vec2>& pts = it.contours[0];
-      stroke_path(pts, it.closed, it.stroke, b);
+      OutlinePieces pieces(pts, it.closed, it.stroke);
+      if (!(pieces.size() > 0 && outline_in_pieces(pieces, g, clip, shift, threads)))
+        stroke_path(pts, it.closed, it.stroke, b);
       s.simple = it.stroke.dashes.empty() && single_segment(pts, it.closed);
       break;
     }

@@ -15,8 +15,9 @@ struct Prepared {
 
 // `clip` is the region whose geometry matters (the canvas grown by the filter's support), in
 // the coordinates the rasterizer works in (already shifted to the filter's cell grid).
-// `shift` is subtracted from every input point.
+// `shift` is subtracted from every input point. A long stroke's outline is built in pieces on
+// up to `threads` threads (stroke.hpp: OutlinePieces); the result does not depend on `threads`.
 void prepare_item(const Scene::Item& item, Vec2 shift, const Box& clip, Geometry& g, Prepared& out,
-                  int canvas_w, int canvas_h);
+                  int canvas_w, int canvas_h, int threads = 1);
 
 }  // namespace splinefig::render::detail

@@ -76,18 +76,21 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
 Image rasterize(const Scene& scene, int threads) {
   using namespace detail;
   const int W = scene.width(), H = scene.height();
-  Image img(0, 0, 4);  // RGBA; the pixels, written once below, get huge-page advice first
+  Image img(0, 0, 4);  // RGBA; the pixels get huge-page advice before they are first written
   img.width = W;
   img.height = H;
   reserve_huge(img.pixels, static_cast<std::size_t>(W) * H * 4);
   img.pixels.resize(static_cast<std::size_t>(W) * H * 4);
   const Color bg = scene.background_;
-  for (std::size_t i = 0; i < img.pixels.size(); i += 4) {
-    img.pixels[i] = bg.r * bg.a;
-    img.pixels[i + 1] = bg.g * bg.a;
-    img.pixels[i + 2] = bg.b * bg.a;
-    img.pixels[i + 3] = bg.a;
-  }
+  auto clear_rows = [&](int r0, int r1) {  // to the background
+    const std::size_t end = static_cast<std::size_t>(r1) * W * 4;
+    for (std::size_t i = static_cast<std::size_t>(r0) * W * 4; i < end; i += 4) {
+      img.pixels[i] = bg.r * bg.a;
+      img.pixels[i + 1] = bg.g * bg.a;
+      img.pixels[i + 2] = bg.b * bg.a;
+      img.pixels[i + 3] = bg.a;
+    }
+  };
 
   const bool box = exact_area(scene.filter_);
   FilterGrid grid = box ? FilterGrid{} : make_filter_grid(scene.filter_, W, H);
@@ -96,8 +99,8 @@ Image rasterize(const Scene& scene, int threads) {
 
   Geometry geom;
   const auto& items = scene.items();
-  auto prepare = [&](std::size_t i, Prepared& p, Geometry& into) {
-    prepare_item(items[i], shift, clip, into, p, W, H);
+  auto prepare = [&](std::size_t i, Prepared& p, Geometry& into, int item_threads) {
+    prepare_item(items[i], shift, clip, into, p, W, H, item_threads);
     if (p.raster || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
@@ -115,6 +118,7 @@ Image rasterize(const Scene& scene, int threads) {
     // cache and memory holds one item at a time. Every row is computed exactly as in the band
     // schedule below (a strip's result does not depend on where its band starts, and filtered
     // items are drawn band by band with the same band boundaries): identical bytes.
+    clear_rows(0, H);
     BoxBand band;
     band.reset(W, kBandRows);
     FilterScratch fs;
@@ -124,7 +128,7 @@ Image rasterize(const Scene& scene, int threads) {
       geom.verts.clear();
       geom.chains.clear();
       p = Prepared{};
-      prepare(i, p, geom);
+      prepare(i, p, geom, 1);
       if (p.row1 <= p.row0) continue;
       if (p.raster) {
         composite_raster(*p.raster, img, 0, H);
@@ -141,7 +145,9 @@ Image rasterize(const Scene& scene, int threads) {
   // Items are prepared by the threads too: in runs of consecutive items, each run into a
   // geometry of its own. An item's chains and vertices are the same in any run (they are
   // appended in order and only their relative order matters), so the bytes do not depend on
-  // how items fall into runs.
+  // how items fall into runs. A long stroke's outline is built in pieces by its preparer and
+  // helper threads it starts (prepare.hpp); while other runs are being prepared too, the
+  // threads outnumber the cores for that while, which costs a little time and no bytes.
   std::vector<Prepared> prep;
   reserve_huge(prep, items.size());
   prep.resize(items.size());
@@ -161,7 +167,7 @@ Image rasterize(const Scene& scene, int threads) {
           const std::size_t r = next_run.fetch_add(1);
           if (r >= runs) return;
           for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i)
-            prepare(i, prep[i], geoms[r]);
+            prepare(i, prep[i], geoms[r], nthreads);
         }
       } catch (...) {  // rethrown on this thread once every preparer has stopped
         std::lock_guard<std::mutex> lock(failure_mutex);
@@ -196,6 +202,7 @@ Image rasterize(const Scene& scene, int threads) {
       const int b = next.fetch_add(1);
       if (b >= bands) return;
       const int r0 = b * kBandRows, r1 = std::min(H, r0 + kBandRows);
+      clear_rows(r0, r1);  // by the band's thread, like everything else in its rows
       for (std::uint32_t i : band_items[static_cast<std::size_t>(b)]) {
         const Prepared& p = prep[i];
         const Geometry& g = geoms[run_of[i]];

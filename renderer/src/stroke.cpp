@@ -15,6 +15,8 @@ class Outliner {
   Outliner(const StrokeStyle& s, ChainBuilder& out) : style_(s), h_(0.5 * s.width), out_(out) {}
 
   void open(std::span<const Vec2> p);    // distinct consecutive points, at least 2
+  // The part of open(p)'s contour for the points [a, b] (0 <= a < b < p.size()), as open pieces.
+  void open_piece(std::span<const Vec2> p, std::size_t a, std::size_t b);
   void closed(std::span<const Vec2> p);  // distinct cyclically consecutive points, at least 2
   void single_point(Vec2 p, Vec2 d);
 
@@ -135,6 +137,65 @@ void Outliner::open(std::span<const Vec2> p) {
   out_.close();
 }
 
+// open(p)'s contour is the left side's vertices forward (p[0] + h n, the joins at p[1] .. p[m-1]),
+// the end cap, the right side's backward, the start cap. The piece for [a, b] takes the left
+// side from the last vertex of the join at p[a] to the last of the join at p[b], and the right
+// side from the first vertex of the join at p[b] back to the first of the join at p[a] (at the
+// ends: through the cap instead). Neighbouring pieces share those vertices, computed from the
+// same two segments, so the pieces of a cut [0, c1], [c1, c2], ..., [ck, m] add every edge of
+// the contour exactly once.
+void Outliner::open_piece(std::span<const Vec2> p, std::size_t a, std::size_t b) {
+  const std::size_t m = p.size() - 1;  // segments
+  const double h = h_;
+  out_.expect(3 * (b - a) + 64);
+  Segment prev = segment(p[a], p[a + 1]);
+  if (a == 0) {
+    out_.move_to(p[0] + h * prev.n);
+  } else {
+    buf_.clear();
+    join(p[a], segment(p[a - 1], p[a]), prev, 1, buf_);
+    out_.move_to(buf_.back());
+  }
+  for (std::size_t j = a + 1; j < b; ++j) {
+    Segment next = segment(p[j], p[j + 1]);
+    buf_.clear();
+    join(p[j], prev, next, 1, buf_);
+    emit(buf_, false, false);
+    prev = next;
+  }
+  Segment after = prev;  // the segment ending at p[b]
+  if (b == m) {
+    out_.line_to(p[m] + h * prev.n);
+    cap(p[m], prev.d, prev.n);
+  } else {
+    const Segment next = segment(p[b], p[b + 1]);
+    buf_.clear();
+    join(p[b], prev, next, 1, buf_);
+    emit(buf_, false, false);
+    out_.leave_open();
+    buf_.clear();
+    join(p[b], prev, next, -1, buf_);
+    out_.move_to(buf_.front());
+  }
+  for (std::size_t j = b - 1; j > a; --j) {
+    Segment before = segment(p[j - 1], p[j]);
+    buf_.clear();
+    join(p[j], before, after, -1, buf_);
+    emit(buf_, true, false);
+    after = before;
+  }
+  if (a == 0) {
+    Vec2 mn{-after.n.x, -after.n.y}, md{-after.d.x, -after.d.y};
+    out_.line_to(p[0] + h * mn);
+    cap(p[0], md, mn);
+  } else {
+    buf_.clear();
+    join(p[a], segment(p[a - 1], p[a]), after, -1, buf_);
+    emit(buf_, true, false);
+  }
+  out_.leave_open();
+}
+
 void Outliner::closed(std::span<const Vec2> p) {
   const std::size_t m = p.size();  // segment j runs from p[j] to p[(j+1) % m]
   out_.expect(6 * m + 64);
@@ -200,6 +261,39 @@ void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& s
     return;
   }
   if (closed) o.closed(p); else o.open(p);
+}
+
+OutlinePieces::OutlinePieces(std::span<const Vec2> pts, bool closed, const StrokeStyle& style) : style_(style) {
+  double period = 0;
+  for (double d : style.dashes) period += d;
+  if (closed || !(style.width > 0) || period > 0) return;
+  cut(pts);
+}
+
+void OutlinePieces::cut(std::span<const Vec2> p) {
+  p_ = p;
+  const std::size_t segments = p.size() > 0 ? p.size() - 1 : 0;
+  pieces_ = segments > 2 * kOutlinePiecePoints ? (segments + kOutlinePiecePoints - 1) / kOutlinePiecePoints : 0;
+}
+
+void OutlinePieces::drop_repeats() {
+  std::vector<Vec2> distinct;
+  distinct.reserve(p_.size());
+  for (Vec2 q : p_)
+    if (distinct.empty() || !(q == distinct.back())) distinct.push_back(q);
+  copy_ = std::move(distinct);
+  cut(copy_);
+}
+
+bool OutlinePieces::build(std::size_t k, ChainBuilder& out) const {
+  const std::size_t a = k * kOutlinePiecePoints, b = std::min(a + kOutlinePiecePoints, p_.size() - 1);
+  // The piece uses the points [a - 1, b + 1]; a repeat among them would make a segment without
+  // a direction.
+  for (std::size_t i = std::max<std::size_t>(a, 1); i <= std::min(b + 1, p_.size() - 1); ++i)
+    if (p_[i] == p_[i - 1]) return false;
+  Outliner o(style_, out);
+  o.open_piece(p_, a, b);
+  return true;
 }
 
 namespace {

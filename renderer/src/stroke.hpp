@@ -20,6 +20,7 @@
 #include "chains.hpp"
 
 #include <span>
+#include <vector>
 
 namespace splinefig::render::detail {
 
@@ -37,5 +38,36 @@ inline constexpr double kMaxDashWork = 1 << 20;
 
 // The stroke of a path with no dashes.
 void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out);
+
+// A long open stroke's outline in pieces that can be built independently, each as open pieces
+// of the contour (chains.hpp): the piece k covers the points [k P, (k + 1) P] (the last one up
+// to the end), P = kOutlinePiecePoints. The cut depends on the points only, so the pieces built
+// one after another into one geometry, or each into its own and appended in order, give the
+// same vertices and chains. The union is stroke_outline's; only its chains split at the cuts.
+//
+// Repeated consecutive points carry no direction and are dropped, as stroke_outline does; a
+// piece finds them among its own points (so that no thread scans the whole path first), and
+// the stroke is then cut again without them.
+inline constexpr std::size_t kOutlinePiecePoints = std::size_t{1} << 15;
+class OutlinePieces {
+ public:
+  // No pieces (size() == 0) unless the stroke is open, has no dashes and more than two pieces'
+  // worth of points; stroke_path draws it then.
+  OutlinePieces(std::span<const Vec2> pts, bool closed, const StrokeStyle& style);
+  std::size_t size() const { return pieces_; }
+  std::size_t points() const { return p_.size(); }
+  // Appends piece k to `out`; false, appending nothing, if its points repeat a point.
+  bool build(std::size_t k, ChainBuilder& out) const;
+  // Cuts the points without their repeats (then size() is 0 if too few are left).
+  void drop_repeats();
+
+ private:
+  void cut(std::span<const Vec2> p);
+
+  const StrokeStyle& style_;
+  std::vector<Vec2> copy_;  // the points without repeats, after drop_repeats
+  std::span<const Vec2> p_;
+  std::size_t pieces_ = 0;
+};
 
 }  // namespace splinefig::render::detail

@@ -145,7 +145,7 @@ class StripSweep {
     int dir, sign, w;              // w: the winding right of the span
     std::uint32_t stamp;           // counts the checks of the pair with its right neighbour
     double x(double y) const { return ax + (y - ay) * slope; }
-    void load(const std::vector<Vec2>& v, std::size_t edge) {
+    void load(const Vertices& v, std::size_t edge) {
       k = edge;
       const Vec2 a = v[edge], b = v[edge + 1];
       ax = a.x;
