@@ -19,6 +19,8 @@
 #include "geometry.hpp"
 #include "huge_pages.hpp"
 
+#include <splinefig/image/image.hpp>
+
 #include <cstddef>
 #include <memory>
 #include <type_traits>
@@ -33,32 +35,11 @@ struct Chain {
   double ymin = 0, ymax = 0, xmin = 0, xmax = 0;
 };
 
-// Vertex storage whose resize() leaves the new vertices unwritten (Vec2 is an implicit-lifetime
-// aggregate; every vertex is written before it is read). A long stroke's outline is assembled
-// so: the array is sized once, then each thread copies its pieces into place, and the memory
-// is first touched (and zeroed by the system) by those threads, not by one thread beforehand.
-// (splinefig::UninitializedAllocator, image.hpp, default-initializes, which zeroes a Vec2: its
-// members have initializers.)
-template <class T>
-struct UnwrittenOnResize : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = UnwrittenOnResize<U>;
-  };
-  UnwrittenOnResize() = default;
-  template <class U>
-  UnwrittenOnResize(const UnwrittenOnResize<U>&) noexcept {}
-  template <class U>
-  void construct(U*) noexcept {
-    static_assert(std::is_trivially_copyable_v<U> && std::is_trivially_destructible_v<U>);
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
-using Vertices = std::vector<Vec2, UnwrittenOnResize<Vec2>>;
+// Vertex storage whose resize() leaves the new vertices unwritten (every vertex is written
+// before it is read). A long stroke's outline is assembled so: the array is sized once, then
+// each thread copies its pieces into place, and the memory is first touched (and zeroed by the
+// system) by those threads, not by one thread beforehand.
+using Vertices = std::vector<Vec2, UninitializedAllocator<Vec2>>;
 
 struct Geometry {
   Vertices verts;

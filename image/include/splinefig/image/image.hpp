@@ -17,6 +17,7 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -24,8 +25,11 @@ namespace splinefig {
 
 enum class Encoding { linear, srgb };
 
-// std::allocator that leaves new floats uninitialised: an output image is written exactly once,
-// so zero-filling it first would double the memory traffic of a resample or a render.
+// std::allocator whose resize() leaves new elements unwritten: an output image is written
+// exactly once, so zero-filling it first would double the memory traffic of a resample or a
+// render. Elements of a trivially copyable and destructible type (float, an aggregate of doubles
+// even with member initializers: implicit-lifetime types) are not constructed at all; others
+// are default-initialized.
 template <class T>
 struct UninitializedAllocator : std::allocator<T> {
   template <class U>
@@ -37,10 +41,10 @@ struct UninitializedAllocator : std::allocator<T> {
   UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
   template <class U, class... Args>
   void construct(U* p, Args&&... args) {
-    if constexpr (sizeof...(Args) == 0)
-      ::new (static_cast<void*>(p)) U;
-    else
+    if constexpr (sizeof...(Args) != 0)
       ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    else if constexpr (!(std::is_trivially_copyable_v<U> && std::is_trivially_destructible_v<U>))
+      ::new (static_cast<void*>(p)) U;
   }
 };
 
