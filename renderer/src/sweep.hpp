@@ -154,7 +154,9 @@ class StripSweep {
       slope = (b.x - a.x) / (b.y - a.y);
     }
   };
-  enum : std::uint32_t { kEnd = 0, kStart = 1, kVertex = 2, kCross = 3 };
+  // The heap's events (starts and ends come from starts_ and ends_): a span's chain turning at a
+  // vertex, and two neighbours crossing; at one height vertices come first.
+  enum : std::uint32_t { kVertex = 0, kCross = 1 };
   // An event: its height, its kind (top two bits of key) and node (the rest: a strip never holds
   // 2^30 spans, their records alone would take 48 GB). A crossing is of the node and its right
   // neighbour, valid while the node's stamp is unchanged (every change of either's edge or of
