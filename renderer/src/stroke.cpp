@@ -107,35 +107,8 @@ Segment segment(Vec2 a, Vec2 b) {
   return {d, Vec2{-d.y, d.x}, len};
 }
 
-void Outliner::open(std::span<const Vec2> p) {
-  const std::size_t m = p.size() - 1;  // segments
-  const double h = h_;
-  out_.expect(3 * p.size() + 64);
-  Segment first = segment(p[0], p[1]), prev = first;
-  out_.move_to(p[0] + h * first.n);
-  for (std::size_t j = 1; j < m; ++j) {
-    Segment next = segment(p[j], p[j + 1]);
-    buf_.clear();
-    join(p[j], prev, next, 1, buf_);
-    emit(buf_, false, false);
-    prev = next;
-  }
-  const Segment last = prev;
-  out_.line_to(p[m] + h * last.n);
-  cap(p[m], last.d, last.n);
-  Segment after = last;
-  for (std::size_t j = m - 1; j >= 1; --j) {
-    Segment before = segment(p[j - 1], p[j]);
-    buf_.clear();
-    join(p[j], before, after, -1, buf_);
-    emit(buf_, true, false);
-    after = before;
-  }
-  Vec2 mn{-first.n.x, -first.n.y}, md{-first.d.x, -first.d.y};
-  out_.line_to(p[0] + h * mn);
-  cap(p[0], md, mn);
-  out_.close();
-}
+// The whole contour is the one piece [0, m]: its start cap ends where its left side began.
+void Outliner::open(std::span<const Vec2> p) { open_piece(p, 0, p.size() - 1); }
 
 // open(p)'s contour is the left side's vertices forward (p[0] + h n, the joins at p[1] .. p[m-1]),
 // the end cap, the right side's backward, the start cap. The piece for [a, b] takes the left

@@ -35,7 +35,7 @@ void StripSweep::build_spans(double y0, double y1) {
   }
   pending_.clear();
   for (std::uint32_t i = 0; i < spans_.size(); ++i) pending_.push_back({spans_[i].xmin, i});
-  sort_small(pending_.begin(), pending_.end(), ByHeight{});
+  sort_small(pending_.begin(), pending_.end(), KeyThenIndex{});
   byx_.resize(spans_.size());
   for (std::size_t i = 0; i < byx_.size(); ++i) byx_[i] = pending_[i].second;
 }

@@ -29,9 +29,9 @@
 
 namespace splinefig::render::detail {
 
-// (height, index) pairs in increasing order: the same order as std::pair's, without its
-// three-way comparison of doubles.
-struct ByHeight {
+// (key, index) pairs (a height, an x) in increasing order: the same order as std::pair's,
+// without its three-way comparison of doubles.
+struct KeyThenIndex {
   bool operator()(const std::pair<double, std::uint32_t>& a, const std::pair<double, std::uint32_t>& b) const {
     return a.first < b.first || (a.first == b.first && a.second < b.second);
   }
@@ -294,8 +294,8 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
     }
     if (s.tb < y1) ends_.push_back({s.tb, i});
   }
-  sort_small(starts_.begin(), starts_.end(), ByHeight{});
-  sort_small(ends_.begin(), ends_.end(), ByHeight{});
+  sort_small(starts_.begin(), starts_.end(), KeyThenIndex{});
+  sort_small(ends_.begin(), ends_.end(), KeyThenIndex{});
   // The order at the strip's top: by x, spans leaving one point by slope.
   std::sort(ord_.begin(), ord_.end(), [&](std::uint32_t a, std::uint32_t b) {
     const Node &A = nodes_[a], &B = nodes_[b];
