@@ -43,8 +43,14 @@ void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::v
   const bool outer_left = c < 0 || (c == 0 && dt < 0);
   const bool outer = s > 0 ? outer_left : !outer_left;
   if (!outer) {
-    // Inner side: the offset lines' intersection X if it lies within both segments.
-    if (h * std::abs(c) <= (1 + dt) * std::min(a.len, b.len) && 1 + dt > 1e-12) {
+    // Inner side: the offset lines' intersection X, if the quadrilateral it cuts off (X, the
+    // two inner corners A, B and P) lies in both rectangles (stroke.hpp). Its triangle P A X
+    // lies in segment a's rectangle and P X B in b's; the whole of it lies in b's when A does,
+    // A being h sin(theta) along b from P, and X, h tan(theta / 2) along b: so both segments
+    // must be at least h max(sin theta, tan(theta / 2)) long. The larger is sin theta for turns
+    // up to 90 degrees (1 + dt >= 1), tan(theta / 2) = |c| / (1 + dt) beyond.
+    const double reach = h * std::abs(c) * std::max(1.0, 1.0 / (1 + dt));
+    if (1 + dt > 1e-12 && reach <= std::min(a.len, b.len)) {
       v.push_back(P + (s * h / (1 + dt)) * (a.n + b.n));
     } else {
       v.push_back(A);

@@ -11,9 +11,14 @@
 // chain, has winding number = the number of pieces covering a point, so the union is
 // {winding > 0}. In that sum the radii shared by a rectangle's end and its join piece cancel,
 // leaving the familiar outline: offset lines, outer join geometry, and on the inner side the
-// two half-ends meeting at the vertex ("pivot"). Where the inner offset lines meet at a point X
-// lying within both segments, replacing the pivot by X removes a quadrilateral lying in both
-// rectangles: the winding drops by one there but stays >= 1, since a point in k such
+// two half-ends meeting at the vertex ("pivot"). Where the inner offset lines meet at a point X,
+// replacing the pivot by X removes the quadrilateral (vertex, inner corner, X, inner corner).
+// When both segments are at least h max(sin theta, tan(theta / 2)) long (h the half-width,
+// theta the turn), X lies within both and each inner corner within the other segment's
+// rectangle, so the quadrilateral lies in both rectangles (X within both is not enough: a turn
+// under 90 degrees into a segment shorter than h sin theta puts a corner past that segment's
+// end, and the part of the quadrilateral beyond it may lie in one piece only). Then the
+// winding drops by one there but stays >= 1, since a point in k such
 // quadrilaterals lies in at least k+1 rectangles. So {winding > 0} is still the union, while a
 // densely sampled smooth curve gives two clean offset curves instead of a comb of spikes.
 // The rasterizer then needs union semantics only where the path really overlaps itself.

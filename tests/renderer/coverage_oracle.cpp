@@ -2,6 +2,7 @@
 // polylines with every cap and join, widths 0.1..20, axis-aligned, diagonal and sub-pixel
 // placements, and dense self-crossing paths. Bound: max error 1/255, mean 1e-3.
 #include "coverage_helpers.hpp"
+#include <oracle/sharp_walks.hpp>
 #include <oracle/union_coverage.hpp>
 
 #include <catch2/catch.hpp>
@@ -47,13 +48,15 @@ testutil::ErrorStats check_case(const Case& c, int W, int H) {
   return testutil::compare(got, want);
 }
 
-void run_cases(const std::vector<Case>& cases, int W, int H) {
+void run_cases(const std::vector<Case>& cases, int W, int H, double max_bound = 1.0 / 255) {
   double worst = 0, mean_sum = 0;
   for (const Case& c : cases) {
     auto e = check_case(c, W, H);
     INFO(describe(c));
-    INFO("max error " << e.max << " at pixel " << e.worst << ", mean " << e.mean);
-    REQUIRE(e.max <= 1.0 / 255);
+    INFO("max error " << e.max << " at pixel (" << e.worst % W << "," << e.worst / W << "), mean " << e.mean);
+    // Round joins and caps are arcs drawn as chords within 1e-4 px (geometry.hpp): several of
+    // them in one pixel may add up to a few times that.
+    REQUIRE(e.max <= (c.join == 1 || c.cap == 1 ? std::max(max_bound, 4e-4) : max_bound));
     REQUIRE(e.mean <= 1e-3);
     worst = std::max(worst, e.max);
     mean_sum += e.mean;
@@ -191,4 +194,60 @@ TEST_CASE("self-overlapping strokes that leave the canvas are covered exactly up
     cases.push_back(c);
   }
   run_cases(cases, 32, 32);
+}
+
+// The outline's inner side goes through the offset lines' intersection only where the
+// quadrilateral that removes lies in both segments' rectangles (stroke.hpp): these are the turns
+// where X lies within both segments but an inner corner does not lie in the other rectangle.
+TEST_CASE("sharp turns next to segments shorter than the half-width are covered exactly") {
+  std::vector<Case> cases;
+  // A 70.5-degree turn (miter, ratio 1.22) into a last segment of 1.17 px at width 3, and a
+  // 55-degree bevel into 0.81 px: 0.071 and 0.148 of a pixel were left uncovered. The points are
+  // those of 256^2 random walks moved by whole pixels onto this canvas.
+  Case miter;
+  miter.width = 3;
+  miter.pts = {{86.53 - 80, 186.36 - 170}, {98.76 - 80, 184.51 - 170}, {99.31 - 80, 185.54 - 170}};
+  cases.push_back(miter);
+  Case bevel;
+  bevel.width = 3;
+  bevel.join = 2;
+  bevel.pts = {{52.65 - 40, 121.22 - 100}, {53.24 - 40, 116.38 - 100}, {52.63 - 40, 115.84 - 100}};
+  cases.push_back(bevel);
+  // Every join and cap, turns from 20 to 180 degrees, the short segment first or last, from a
+  // tenth of the half-width to a little over the width.
+  for (int join = 0; join < 3; ++join)
+    for (int cap = 0; cap < 3; ++cap)
+      for (double turn : {20.0, 35.0, 55.0, 70.5, 90.0, 120.0, 150.0, 170.0, 178.0, 180.0})
+        for (double rel : {0.1, 0.3, 0.6, 0.9, 1.2, 1.6, 2.5})
+          for (bool short_last : {true, false}) {
+            Case c;
+            c.join = join;
+            c.cap = cap;
+            c.width = 3;
+            const double a = 0.3 + turn * oracle::kPi / 180, len = rel * 1.5;
+            const oracle::P2 P{12.37, 11.81}, A{P.x - 8 * std::cos(0.3), P.y - 8 * std::sin(0.3)};
+            const oracle::P2 B{P.x + len * std::cos(a), P.y + len * std::sin(a)};
+            if (short_last) c.pts = {A, P, B}; else c.pts = {B, P, A};
+            cases.push_back(c);
+          }
+  run_cases(cases, 24, 24, 1e-4);
+}
+
+TEST_CASE("random walks of hairpins, near-reversals and sub-width segments are covered exactly") {
+  std::mt19937_64 rng(20261202);
+  std::vector<Case> cases;
+  for (double width : {1.0, 3.0, 4.0, 7.0})
+    for (int join = 0; join < 3; ++join)
+      for (int cap = 0; cap < 3; ++cap)
+        for (int rep = 0; rep < 2; ++rep) {
+          Case c;
+          c.join = join;
+          c.cap = cap;
+          c.width = width;
+          c.miter_limit = rep ? 10 : 4;
+          c.closed = rep == 1 && cap == 0;
+          c.pts = oracle::sharp_walk(rng, 40, width, 8, 40);
+          cases.push_back(c);
+        }
+  run_cases(cases, 48, 48, 1e-4);
 }
