@@ -9,12 +9,14 @@
 //           Rw1M: 10^5 and 10^6 points).
 // After the runs it prints the ratio table: splinefig's one-thread CPU time against Cairo's and
 // AGG's, and its wall-time speed-up on all threads, each marked where it misses its goal.
-// accuracy/<impl> renders random strokes and reports the coverage error against the exact
-// union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
+// accuracy/<set>/<impl> renders random strokes (set "random") or seeded walks of hairpins,
+// near-reversals and sub-width segments (set "walks") and reports the coverage error against the
+// exact union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
 // memory/<workload>/<impl> reports the peak memory drawing adds to a process (counter
 // added_MB, measured in a forked child, bench/peak_memory.hpp) and what its input takes
 // (input_MB); splinefig on one thread and on all threads, copying the points into its scene,
 // and on one thread handing them over (splinefig-moved: Scene::stroke_polyline(vector&&)).
+#include <oracle/sharp_walks.hpp>
 #include <oracle/union_coverage.hpp>
 #include <peak_memory.hpp>
 
@@ -33,6 +35,7 @@
 #include <cairo.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -312,48 +315,75 @@ void BM_memory(benchmark::State& state, char id, int impl, int threads) {
 }
 
 // ---- accuracy against the exact union oracle -------------------------------------------
-std::vector<std::pair<Workload, std::vector<double>>> accuracy_cases() {
-  std::vector<std::pair<Workload, std::vector<double>>> cases;
-  std::mt19937_64 rng(20261127);
-  std::uniform_real_distribution<double> u(0, 1);
+// Two sets: "random", 27 short random polylines on 40^2; "walks", 180 seeded walks of 60 points
+// on 64^2 built to reach the outline's hard cases (oracle/sharp_walks.hpp: hairpins,
+// near-reversals, segments shorter than the half-width), widths 1 to 7, every join and cap.
+struct AccuracyCase {
+  Workload w;
+  int size;
+  std::vector<double> want;
+};
+
+AccuracyCase oracle_case(Workload w, int size) {
+  std::vector<oracle::P2> op;
+  for (auto q : w.paths[0].pts) op.push_back({q.x, q.y});
+  auto pieces = oracle::stroke_pieces(op, false, w.width, static_cast<oracle::Join>(static_cast<int>(w.join)), 4,
+                                      static_cast<oracle::Cap>(static_cast<int>(w.cap)));
+  return {std::move(w), size, oracle::union_coverage(pieces, size, size)};
+}
+
+std::vector<AccuracyCase> accuracy_cases(bool walks) {
+  std::vector<AccuracyCase> cases;
   const sr::Join joins[] = {sr::Join::Miter, sr::Join::Round, sr::Join::Bevel};
   const sr::Cap caps[] = {sr::Cap::Butt, sr::Cap::Round, sr::Cap::Square};
+  if (walks) {
+    std::mt19937_64 rng(20261203);
+    for (int k = 0; k < 180; ++k) {
+      const double width = std::array{1.0, 2.0, 3.0, 4.0, 7.0}[static_cast<std::size_t>(k / 9 % 5)];
+      Workload w{{}, width, joins[k % 3], caps[(k / 3) % 3]};
+      Path p;
+      for (auto q : oracle::sharp_walk(rng, 60, width, 10, 54)) p.pts.push_back({q.x, q.y});
+      w.paths.push_back(std::move(p));
+      cases.push_back(oracle_case(std::move(w), 64));
+    }
+    return cases;
+  }
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> u(0, 1);
   for (int k = 0; k < 27; ++k) {
     Workload w{{}, std::exp(std::log(0.1) + (std::log(20) - std::log(0.1)) * u(rng)), joins[k % 3], caps[(k / 3) % 3]};
     Path p;
     const int n = k < 18 ? 2 + k % 4 : 20;
     for (int i = 0; i < n; ++i) p.pts.push_back({6 + 28 * u(rng), 6 + 28 * u(rng)});
     if (k >= 18) w.width = 0.3 + 2.5 * u(rng);
-    std::vector<oracle::P2> op;
-    for (auto q : p.pts) op.push_back({q.x, q.y});
-    auto pieces = oracle::stroke_pieces(op, false, w.width, static_cast<oracle::Join>(static_cast<int>(w.join)), 4,
-                                        static_cast<oracle::Cap>(static_cast<int>(w.cap)));
     w.paths.push_back(std::move(p));
-    cases.push_back({std::move(w), oracle::union_coverage(pieces, 40, 40)});
+    cases.push_back(oracle_case(std::move(w), 40));
   }
   return cases;
 }
 
-void BM_accuracy(benchmark::State& state, int impl) {
-  static const auto cases = accuracy_cases();
+void BM_accuracy(benchmark::State& state, int impl, bool walks) {
+  static const auto random_cases = accuracy_cases(false);
+  static const auto walk_cases = accuracy_cases(true);
+  const auto& cases = walks ? walk_cases : random_cases;
   double max_err = 0, sum = 0;
   std::size_t count = 0;
   for (auto _ : state) {
     max_err = 0; sum = 0; count = 0;
-    for (const auto& [w, want] : cases) {
+    for (const auto& [w, n, want] : cases) {
       std::vector<double> got(want.size());
       if (impl == 0) {
-        splinefig::Image img = draw_splinefig(w, 1, 40, {0, 0, 0, 0}, {1, 1, 1, 1});
+        splinefig::Image img = draw_splinefig(w, 1, n, {0, 0, 0, 0}, {1, 1, 1, 1});
         for (std::size_t i = 0; i < got.size(); ++i) got[i] = img.pixels[i * 4 + 3];
       } else if (impl == 1) {
-        CairoCanvas c(40);
+        CairoCanvas c(n);
         draw_cairo(c, w, false, 1);
         const unsigned char* d = cairo_image_surface_get_data(c.surface);
         const int stride = cairo_image_surface_get_stride(c.surface);
-        for (int y = 0; y < 40; ++y)
-          for (int x = 0; x < 40; ++x) got[static_cast<std::size_t>(y * 40 + x)] = d[y * stride + x * 4 + 3] / 255.0;
+        for (int y = 0; y < n; ++y)
+          for (int x = 0; x < n; ++x) got[static_cast<std::size_t>(y * n + x)] = d[y * stride + x * 4 + 3] / 255.0;
       } else {
-        AggCanvas c(40);
+        AggCanvas c(n);
         draw_agg(c, w, false, 255);
         for (std::size_t i = 0; i < got.size(); ++i) got[i] = c.buf[i * 4 + 3] / 255.0;
       }
@@ -388,9 +418,11 @@ void register_all() {
     benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_memory, id, 1, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_memory, id, 2, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
   }
-  benchmark::RegisterBenchmark("accuracy/splinefig", BM_accuracy, 0)->Iterations(1)->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("accuracy/cairo", BM_accuracy, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("accuracy/agg", BM_accuracy, 2)->Iterations(1)->Unit(benchmark::kMillisecond);
+  for (auto [walks, set] : {std::pair{false, "random"}, {true, "walks"}})
+    for (auto [impl, name] : {std::pair{0, "splinefig"}, {1, "cairo"}, {2, "agg"}})
+      benchmark::RegisterBenchmark((std::string("accuracy/") + set + "/" + name).c_str(), BM_accuracy, impl, walks)
+          ->Iterations(1)
+          ->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace

@@ -253,6 +253,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   using namespace detail;
   toml::table doc;
   if (std::string bad = utf8_problem(text, name); !bad.empty()) throw SpecFileError(bad);
+  if (std::string bad = key_depth_problem(text, name); !bad.empty()) throw SpecFileError(bad);
   try {
     doc = toml::parse(text, name);
   } catch (const toml::parse_error& e) {

@@ -35,6 +35,64 @@ const char* type_name(toml::node_type t) {
 
 }  // namespace
 
+std::string key_depth_problem(std::string_view text, const std::string& file) {
+  std::size_t line = 1, parts = 0, i = 0;
+  bool after_dot = false;  // a '.' since the chain's last atom
+  auto atom = [&]() {
+    parts = after_dot ? parts + 1 : 1;
+    after_dot = false;
+    return parts > kMaxKeyParts;
+  };
+  auto too_deep = [&]() {
+    return file + ":" + std::to_string(line) + ": a dotted key of more than " + std::to_string(kMaxKeyParts) +
+           " parts (the limit of key and table-header depth)";
+  };
+  auto is_bare = [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  };
+  while (i < text.size()) {
+    const char c = text[i];
+    if (c == '"' || c == '\'') {
+      const bool multi = text.substr(i, 3) == std::string_view(c == '"' ? "\"\"\"" : "'''");
+      const std::size_t start_line = line;
+      i += multi ? 3 : 1;
+      while (i < text.size()) {
+        if (text[i] == '\n') ++line;
+        if (c == '"' && text[i] == '\\') {  // an escape; a backslash may end a line of a """ string
+          if (i + 1 < text.size() && text[i + 1] == '\n') ++line;
+          i += 2;
+          continue;
+        }
+        if (text[i] == c && (!multi || text.substr(i, 3) == std::string_view(c == '"' ? "\"\"\"" : "'''"))) {
+          i += multi ? 3 : 1;
+          // a multi-line string may end in up to two more quotes
+          while (multi && i < text.size() && text[i] == c) ++i;
+          break;
+        }
+        ++i;
+      }
+      if (atom()) { line = start_line; return too_deep(); }
+      continue;
+    }
+    if (is_bare(c)) {
+      while (i < text.size() && is_bare(text[i])) ++i;
+      if (atom()) return too_deep();
+      continue;
+    }
+    if (c == '.') after_dot = parts > 0;
+    else if (c == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+      continue;
+    } else if (c != ' ' && c != '\t') {
+      if (c == '\n') ++line;
+      parts = 0;
+      after_dot = false;
+    }
+    ++i;
+  }
+  return {};
+}
+
 std::string utf8_problem(std::string_view text, const std::string& file) {
   std::size_t i = 0, line = 1, line_start = 0;
   auto bad_at = [&]() -> std::size_t {  // the offset of the first invalid byte, or npos

@@ -106,4 +106,11 @@ std::string line_of(const std::string& file, const toml::source_region& where);
 // holds it (its table's header and the key on that or an earlier line). Empty when valid.
 std::string utf8_problem(std::string_view text, const std::string& file);
 
+// Checks, before the TOML parser sees it, that no dotted key, table header or chain of dotted
+// atoms in `text` has more than kMaxKeyParts parts: the parser builds (and the document frees)
+// one nested table per part, recursively, so 50000 parts overflowed the stack. Strings and
+// comments are skipped as TOML reads them; a number such as 1.5 counts as two parts, well within
+// the limit. "FILE:LINE: a dotted key of more than 64 parts" on the first such chain, else empty.
+std::string key_depth_problem(std::string_view text, const std::string& file);
+
 }  // namespace splinefig::figures::detail

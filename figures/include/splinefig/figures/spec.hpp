@@ -35,6 +35,7 @@ inline constexpr long long kMaxCanvasPixels = 1LL << 28;
 inline constexpr std::size_t kMaxSpecBytes = std::size_t(1) << 26;  // a spec file: 64 MiB
 inline constexpr std::size_t kMaxMarks = 100000;                    // x_marks, y_marks, curve marks
 inline constexpr double kMaxFontSize = 4096;                         // text sizes, px (also after --scale)
+inline constexpr std::size_t kMaxKeyParts = 64;                     // parts of a dotted key or table header
 inline constexpr std::size_t kMaxBezierPoints = 128;  // control points of one [[axes.bezier]] (degree 127)
 
 struct Canvas {
