@@ -103,6 +103,8 @@ int run(const DiffArgs& args) {
     c = compare::compare_images(a, b, o, mask.get());
   } catch (const std::invalid_argument& e) {
     throw cli::Failure(std::string("--mask ") + args.mask + ": " + e.what());
+  } catch (const std::length_error& e) {
+    throw cli::Failure(args.a + " and " + args.b + ": " + e.what());
   }
 
   if (!args.diff_image.empty()) write(args.diff_image, compare::difference_image(c.pa, c.pb, args.scale.value_or(1.0f)));

@@ -1,17 +1,40 @@
 // Windows, padding and alpha removal (see image.hpp).
 #include <splinefig/compare/image.hpp>
 
+#include <splinefig/image/io.hpp>
+
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
 
 namespace splinefig::compare {
+
+namespace {
+
+std::string describe(const Window& w) {
+  return "[" + std::to_string(w.x) + ", " + std::to_string(w.y) + ", " + std::to_string(w.width) + " x " +
+         std::to_string(w.height) + "]";
+}
+
+}  // namespace
 
 Window union_window(const Window& a, const Window& b) {
   if (a.width <= 0 || a.height <= 0) return b;
   if (b.width <= 0 || b.height <= 0) return a;
-  const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
-  const int x1 = std::max(a.x + a.width, b.x + b.width), y1 = std::max(a.y + a.height, b.y + b.height);
-  return {x0, y0, x1 - x0, y1 - y0};
+  // In 64 bits: an image's origin and size are ints, their sum and the span of two windows may
+  // not be; the span is padded whole, so it is bounded as an image is (io.hpp).
+  using W = std::int64_t;
+  const W x0 = std::min<W>(a.x, b.x), y0 = std::min<W>(a.y, b.y);
+  const W x1 = std::max(W{a.x} + a.width, W{b.x} + b.width), y1 = std::max(W{a.y} + a.height, W{b.y} + b.height);
+  const W w = x1 - x0, h = y1 - y0;
+  const W most = W{max_image_pixels};
+  if (w > most || h > most || w * h > most || x1 > INT_MAX || y1 > INT_MAX)
+    throw std::length_error("the data windows " + describe(a) + " and " + describe(b) + " span " + std::to_string(w) +
+                            " x " + std::to_string(h) + " pixels, over the limit of 2^28 pixels compared");
+  return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(w), static_cast<int>(h)};
 }
 
 Image pad_to(const Image& im, const Window& w, int channels) {

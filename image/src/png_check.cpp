@@ -92,6 +92,25 @@ void check_png_header(const std::string& path) {
   const std::uint32_t w = be32(head + 16), h = be32(head + 20);
   if (w == 0 || h == 0) bad(path, "corrupt PNG (image size " + std::to_string(w) + " x " + std::to_string(h) + ")");
   check_png_size(path, w, h, head[25]);
+  // The data window's origin (an oFFs chunk, which comes before the first IDAT) against its
+  // limit, as read_image checks it, so that a spec's image is refused at load.
+  in.seekg(8 + 12 + 13);
+  for (int chunks = 0; chunks < 256 && in; ++chunks) {
+    unsigned char ch[8];
+    if (!in.read(reinterpret_cast<char*>(ch), sizeof ch)) break;
+    const std::uint32_t length = be32(ch);
+    if (std::memcmp(ch + 4, "IDAT", 4) == 0 || std::memcmp(ch + 4, "IEND", 4) == 0) break;
+    if (std::memcmp(ch + 4, "oFFs", 4) == 0 && length == 9) {
+      unsigned char o[8];
+      if (!in.read(reinterpret_cast<char*>(o), sizeof o)) break;
+      const auto x = static_cast<std::int32_t>(be32(o)), y = static_cast<std::int32_t>(be32(o + 4));
+      if (std::abs(std::int64_t{x}) > max_image_origin || std::abs(std::int64_t{y}) > max_image_origin)
+        bad(path, "data window origin (" + std::to_string(x) + ", " + std::to_string(y) +
+                      ") out of range (limit 2^30 either way)");
+      break;
+    }
+    in.seekg(std::streamoff(length) + 4, std::ios::cur);
+  }
 }
 
 void check_png_structure(const std::string& path) {

@@ -77,6 +77,9 @@ std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spe
   if (std::uint64_t(spec.width) > max_image_side || std::uint64_t(spec.height) > max_image_side)
     unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                          " pixels, limit 65536 a side)");
+  if (std::abs(std::int64_t(spec.x)) > max_image_origin || std::abs(std::int64_t(spec.y)) > max_image_origin)
+    unreadable(path, "data window origin (" + std::to_string(spec.x) + ", " + std::to_string(spec.y) +
+                         ") out of range (limit 2^30 either way)");
   return values;
 }
 

@@ -10,10 +10,10 @@ void composite_raster(const Scene::Item::Raster& r, Image& img, int r0, int r1) 
   const Image& src = *r.image;
   const double x0 = r.p0.x, y0 = r.p0.y, x1 = r.p1.x, y1 = r.p1.y;
   const double xlo = std::min(x0, x1), xhi = std::max(x0, x1), ylo = std::min(y0, y1), yhi = std::max(y0, y1);
-  const int ix0 = std::max(0, static_cast<int>(std::floor(xlo)));
-  const int ix1 = std::min(img.width, static_cast<int>(std::ceil(xhi)));
-  const int iy0 = std::max(r0, static_cast<int>(std::floor(ylo)));
-  const int iy1 = std::min(r1, static_cast<int>(std::ceil(yhi)));
+  // Clamped while still doubles: a rectangle may reach 1e14 px past the canvas.
+  auto to_range = [](double v, int lo, int hi) { return static_cast<int>(std::clamp(v, double(lo), double(hi))); };
+  const int ix0 = to_range(std::floor(xlo), 0, img.width), ix1 = to_range(std::ceil(xhi), 0, img.width);
+  const int iy0 = to_range(std::floor(ylo), r0, r1), iy1 = to_range(std::ceil(yhi), r0, r1);
   auto fetch = [&](int x, int y, int k) {
     x = std::clamp(x, 0, src.width - 1);
     y = std::clamp(y, 0, src.height - 1);

@@ -129,3 +129,72 @@ TEST_CASE("an image wider or taller than 65536 px is refused from its header") {
                     Catch::Contains("image too large (2097155 x 3 pixels, limit 65536 a side)"));
   CHECK_THROWS_WITH(splinefig::read_image(path), Catch::Contains("limit 65536 a side"));
 }
+
+namespace {
+
+// zero_png with an oFFs chunk (pixel units) placing its data window at (x, y).
+std::string offset_png(std::uint32_t w, std::uint32_t h, std::int32_t x, std::int32_t y) {
+  const std::string png = zero_png(w, h, h);
+  const std::size_t after_ihdr = 8 + 4 + 4 + 13 + 4;
+  return png.substr(0, after_ihdr) +
+         chunk("oFFs", be32(std::uint32_t(x)) + be32(std::uint32_t(y)) + std::string(1, '\0')) +
+         png.substr(after_ihdr);
+}
+
+}  // namespace
+
+TEST_CASE("a data window origin beyond 2^30 is refused from the header, so no window sum overflows") {
+  const fs::path dir = scratch();
+  const std::int32_t far = std::int32_t(1) << 30;
+  struct Origin {
+    std::int32_t x, y;
+  };
+  for (Origin o : {Origin{0, 2147483647}, {2147483640, 0}, {-2147483647, 0}, {0, -far - 1}, {far + 1, 3}}) {
+    write_file(dir / "far.png", offset_png(23, 5, o.x, o.y));
+    const std::string says = "far.png: data window origin (" + std::to_string(o.x) + ", " + std::to_string(o.y) +
+                             ") out of range (limit 2^30 either way)";
+    check_unreadable({"diff", "far.png", "far.png"}, dir, 4, says);
+    check_unreadable({"resample", "far.png", "-o", "out.png", "--filter", "bspline", "--size", "8x8"}, dir, 2, says);
+    write_file(dir / "far.toml", "[canvas]\nwidth = 10\nheight = 10\n[[image]]\nfile = \"far.png\"\n");
+    check_unreadable({"render", "far.toml", "-o", "out.png"}, dir, 2, "far.toml:5: image[0].file: ./far.png: data window");
+    CHECK_THROWS_WITH(splinefig::read_image((dir / "far.png").string()), Catch::Contains(says));
+  }
+  // At the limit the image is read, and compared with itself it matches.
+  write_file(dir / "edge.png", offset_png(23, 5, -far, far));
+  const Outcome same = run_in(dir, {"diff", "edge.png", "edge.png"});
+  INFO(same.err);
+  CHECK(same.code == 0);
+  CHECK_THAT(same.out, Catch::Contains("PASS"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("two small images whose windows lie far apart are refused before the span is allocated") {
+  const fs::path dir = scratch();
+  splinefig::Image a = splinefig::Image::zeros(1, 1, 4), b = splinefig::Image::zeros(1, 1, 4);
+  b.x = b.y = 30000;
+  splinefig::write_image((dir / "near.exr").string(), a);
+  splinefig::write_image((dir / "far.exr").string(), b);
+  const Outcome o = run_in(dir, {"diff", "near.exr", "far.exr"});
+  INFO(o.seconds << " s: " << o.err);
+  CHECK(o.code == 2);
+  CHECK(o.err ==
+        "splinefig diff: near.exr and far.exr: the data windows [0, 0, 1 x 1] and [30000, 30000, 1 x 1] span 30001 x "
+        "30001 pixels, over the limit of 2^28 pixels compared\n");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("an [[image]] reaching 1e14 px past the canvas draws its visible part") {
+  const fs::path dir = scratch();
+  write_file(dir / "small.png", zero_png(4, 4, 4));
+  for (const std::string interpolation : {"nearest", "bilinear"}) {
+    write_file(dir / "huge_item.toml", "[canvas]\nwidth = 16\nheight = 16\n[[image]]\nfile = \"small.png\"\n"
+                                       "at = [-5e13, -5e13]\nsize = [1e14, 1e14]\ninterpolation = \"" +
+                                           interpolation + "\"\n");
+    const Outcome o = run_in(dir, {"render", "huge_item.toml", "-o", "out.png"});
+    INFO(interpolation << ": " << o.err);
+    CHECK(o.code == 0);
+    CHECK(fs::exists(dir / "out.png"));
+    fs::remove(dir / "out.png");
+  }
+  fs::remove_all(dir);
+}

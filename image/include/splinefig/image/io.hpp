@@ -34,6 +34,9 @@ inline constexpr std::uint64_t max_image_pixels = std::uint64_t(1) << 28;
 // And in either side: 65536 px (OpenEXR sizes its scanline buffers by the width; a header of a
 // few hundred bytes declaring 2097155 x 3 pixels made it ask for 4 GiB).
 inline constexpr std::uint64_t max_image_side = std::uint64_t(1) << 16;
+// And in the data window's origin (EXR data windows, PNG oFFs offsets): |x|, |y| <= 2^30, so that
+// origin + size, and the span of two windows, fit an int (an oFFs y of 2^31 - 1 overflowed it).
+inline constexpr std::int64_t max_image_origin = std::int64_t(1) << 30;
 
 enum class ReadMode {
   // The values the file holds, converted to float the way OpenImageIO converts them (8-bit
