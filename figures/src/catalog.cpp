@@ -29,15 +29,9 @@ std::string builtin_specs_dir() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    // An installed (or relocated) tree: bin/splinefig next to share/splinefig/specs.
+    // An installed (or relocated) tree, or the build tree: bin/splinefig (cli/splinefig) next
+    // to share/splinefig/specs.
     candidates.push_back(exe.parent_path().parent_path() / SPLINEFIG_DATADIR / "splinefig" / "specs");
-#ifdef SPLINEFIG_SOURCE_SPECS_DIR
-    // A program of the build tree uses the specs it was built from; an installed one never
-    // looks at the source tree.
-    const fs::path build = fs::path(SPLINEFIG_BUILD_DIR).lexically_normal();
-    const auto rel = exe.lexically_normal().lexically_relative(build);
-    if (!rel.empty() && *rel.begin() != "..") candidates.emplace_back(SPLINEFIG_SOURCE_SPECS_DIR);
-#endif
   }
   candidates.emplace_back(SPLINEFIG_INSTALLED_SPECS_DIR);
   for (const auto& c : candidates)

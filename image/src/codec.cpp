@@ -2,13 +2,15 @@
 //
 // Candidates, first found wins:
 //   1. $SPLINEFIG_IMAGE_MODULE, when set (then the only candidate);
-//   2. near the object holding this code (a shared library or Python extension it was linked
+//   2. the bare file name, which the dynamic loader looks up in the program's RUNPATH (set by
+//      the package config for programs linking splinefig::image: they load the module of the
+//      install they were built against) and LD_LIBRARY_PATH;
+//   3. near the object holding this code (a shared library or Python extension it was linked
 //      into) and near the running program (/proc/self/exe): <A>/<libdir>/splinefig/ for the
-//      directories A above it (add_near) -- so an installed tree works wherever it is moved;
-//   3. the bare file name, which the dynamic loader looks up in the program's RUNPATH (set by
-//      the package config for programs linking splinefig::image) and LD_LIBRARY_PATH;
-//   4. this build tree's module;
-//   5. the configured install libdir.
+//      directories A above it (add_near) -- so an installed tree works wherever it is moved.
+// No absolute path is compiled in: the build tree puts the module in <build>/<libdir>/splinefig,
+// where rule 3 finds it for the build tree's programs, tests and Python package, and an
+// installed program never looks into the tree it was built in.
 #include "codec.hpp"
 
 #include <splinefig/image/io.hpp>
@@ -42,7 +44,7 @@ void add_near(std::vector<std::string>& out, const fs::path& object) {
 }
 
 std::vector<std::string> candidates() {
-  std::vector<std::string> out;
+  std::vector<std::string> out{SPLINEFIG_IMAGE_MODULE_NAME};
   // For the program itself dladdr gives argv[0], which may be relative or a bare name found
   // in PATH: only an absolute name (a shared object's) is used; /proc/self/exe names the program.
   Dl_info info{};
@@ -51,9 +53,6 @@ std::vector<std::string> candidates() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec) add_near(out, exe);
-  out.push_back(SPLINEFIG_IMAGE_MODULE_NAME);
-  out.push_back(SPLINEFIG_IMAGE_MODULE_BUILD_PATH);
-  out.push_back(SPLINEFIG_IMAGE_MODULE_INSTALL_PATH);
   return out;
 }
 

@@ -50,6 +50,43 @@ if(count LESS 7)
   message(FATAL_ERROR "the package holds only ${count} libraries: ${libs}")
 endif()
 
+# No file of the package holds a path of the build or source tree (a program that looked there
+# would run whatever anyone able to write into that tree planted).
+file(GLOB_RECURSE packaged LIST_DIRECTORIES false ${root}/*)
+foreach(f IN LISTS packaged)
+  file(STRINGS ${f} hits REGEX "${BINARY_DIR}|${SOURCE_DIR}/")
+  if(hits)
+    list(GET hits 0 hit)
+    message(FATAL_ERROR "the package's ${f} holds a path of the build or source tree: ${hit}")
+  endif()
+endforeach()
+
+# With a decoy module planted where the build tree used to keep its module and where it keeps
+# it now, the packaged program in a root outside the build tree, its own module removed, loads
+# neither: it reports the module missing.
+string(RANDOM LENGTH 12 tag)
+set(outside /tmp/splinefig-deb-outside-${tag})
+file(MAKE_DIRECTORY ${outside}/usr/bin)
+file(COPY ${root}/usr/bin/splinefig DESTINATION ${outside}/usr/bin)
+file(GLOB modules ${BINARY_DIR}/lib*/splinefig/libsplinefig_image_oiio.so)
+list(GET modules 0 module)
+get_filename_component(module_name ${module} NAME)
+set(decoys ${BINARY_DIR}/image/${module_name} ${BINARY_DIR}/${module_name})
+foreach(d IN LISTS decoys)
+  file(WRITE ${d} "decoy: not a shared object\n")
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -E env LD_DEBUG=files ${outside}/usr/bin/splinefig diff
+  ${SOURCE_DIR}/tests/reference/renderer/fills.png ${SOURCE_DIR}/tests/reference/renderer/fills.png
+  WORKING_DIRECTORY ${outside} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(REMOVE ${decoys})
+file(REMOVE_RECURSE ${outside})
+if(err MATCHES "decoy|${BINARY_DIR}")
+  message(FATAL_ERROR "the packaged program looked into the build tree:\n${err}")
+endif()
+if(NOT rc EQUAL 4 OR NOT err MATCHES "cannot find the image I/O module")
+  message(FATAL_ERROR "without its module the packaged program should report it missing (exit 4): ${rc}\n${err}")
+endif()
+
 # The unpacked command draws from the package's specs (run outside the source and build trees):
 # a title changed in the unpacked copy shows in index.json.
 file(READ ${root}/usr/share/splinefig/specs/bias.toml spec)
