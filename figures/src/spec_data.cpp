@@ -81,8 +81,9 @@ std::optional<std::vector<Vec2>> data_points(TableReader& r, std::string_view ke
   const toml::node* value = r.has(key) ? r.node(key) : nullptr;
   if (file) {
     if (value) r.fail(file_key, "give either " + std::string(key) + " or " + file_key + ", not both");
-    const auto name = file->value<std::string>();
-    if (!name || name->empty()) r.fail_at(*file, file_key, "expected the name of a CSV file (a string)");
+    if (!file->is_string() || file->as_string()->get().empty())
+      r.fail_at(*file, file_key, "expected the name of a CSV file (a string)");
+    const auto name = r.opt_string(file_key);  // a NUL in it is refused there
     std::filesystem::path p(*name);
     if (p.is_relative()) p = std::filesystem::path(data.base_dir) / p;
     return read_file(r, file_key, *name, p);

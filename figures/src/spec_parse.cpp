@@ -3,6 +3,8 @@
 #include "spec_parse.hpp"
 
 #include <splinefig/image/io.hpp>
+#include <splinefig/renderer/renderer.hpp>
+#include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -83,6 +85,13 @@ Canvas parse_canvas(TableReader& r) {
   c.background = r.color("background", c.background);
   c.filter = r.string("filter", c.filter);
   if (c.filter != "box" && c.filter != "tent") checked_basis(r, "filter", c.filter);
+  // The kernel the renderer will be given, checked as it checks a pixel filter, so that a
+  // filter it refuses is an error here, with the spec's file, line and key.
+  try {
+    render::validate_pixel_filter(parse_kernel(c.filter));
+  } catch (const std::exception& e) {
+    r.fail("filter", e.what());
+  }
   r.finish();
   return c;
 }

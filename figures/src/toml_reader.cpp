@@ -279,6 +279,8 @@ std::optional<std::string> TableReader::opt_string(std::string_view key) {
   if (!n) return std::nullopt;
   auto s = n->as_string();
   if (!s) fail_at(*n, key, "expected a string");
+  // No spec string needs a NUL, and a path holding one would be cut there ("a\0b" opened "a").
+  if (s->get().find('\0') != std::string::npos) fail_at(*n, key, "a string holding a NUL character (\\u0000)");
   return s->get();
 }
 
@@ -359,6 +361,7 @@ std::vector<std::string> TableReader::strings(std::string_view key) {
   for (const toml::node& e : *a) {
     auto s = e.as_string();
     if (!s) fail_at(e, key, "expected an array of strings");
+    if (s->get().find('\0') != std::string::npos) fail_at(e, key, "a string holding a NUL character (\\u0000)");
     out.push_back(s->get());
   }
   return out;

@@ -122,3 +122,15 @@ TEST_CASE("a 1000-part table header is refused cleanly on a 256 KiB stack") {
         "splinefig render: deep.toml:1: a dotted key of more than 64 parts (the limit of key and table-header depth)\n");
   CHECK_FALSE(fs::exists(dir / "deep.png"));
 }
+
+TEST_CASE("a pixel filter the renderer refuses is an error at load, with the spec's file, line and key") {
+  check_refused("wide_filter", "[canvas]\nwidth = 20\nheight = 20\nfilter = \"uniform-bspline:degree=12\"\n",
+                "wide_filter.toml:4: canvas.filter: pixel filter 'uniform-bspline:degree=12': support wider than 8 px");
+}
+
+TEST_CASE("a spec string holding a NUL is refused: no path is cut short at it") {
+  const std::string says = ": a string holding a NUL character (\\u0000)";
+  check_refused("nul_points", "[axes]\n[[axes.series]]\npoints_file = \"a\\u0000b\"\n", "nul_points.toml:3: axes.series[0].points_file" + says);
+  check_refused("nul_image", "[[image]]\nfile = \"img.png\\u0000.exr\"\n", "nul_image.toml:2: image[0].file" + says);
+  check_refused("nul_title", "title = \"a\\u0000b\"\n", "nul_title.toml:1: title" + says);
+}
