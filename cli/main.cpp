@@ -4,6 +4,7 @@
 #include <splinefig/version.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -18,6 +19,9 @@ std::vector<Command>& registry() {
 
 int main(int argc, char** argv) {
   using namespace splinefig::cli;
+  // A write over the file-size limit (ulimit -f) then fails with EFBIG and is reported, its
+  // temporary removed, instead of the process dying silently by SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"splinefig: cubic splines turned into exact pictures", "splinefig"};
   app.set_version_flag("--version", std::string("splinefig ") + SPLINEFIG_VERSION);
   app.require_subcommand(1);

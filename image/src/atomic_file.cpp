@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 #include <mutex>
 #include <optional>
 
@@ -32,8 +33,15 @@ struct Slot {
 constexpr int kSlots = 64;
 Slot g_slots[kSlots];
 
-constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
-struct sigaction g_previous[3];
+// Every signal whose default action ends the process and that another process (or a limit)
+// sends: the handler removes the temporaries, then the signal ends the process as it would have.
+// The synchronous faults (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) are left alone. SIGXFSZ is
+// here for programs that leave it at its default; the splinefig command ignores it, so that a
+// write over the file-size limit fails with EFBIG and is reported like any failed write.
+constexpr int kSignals[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM,
+                            SIGPIPE, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ, SIGPOLL};
+constexpr int kSignalCount = static_cast<int>(std::size(kSignals));
+struct sigaction g_previous[kSignalCount];
 
 // Creating a temporary file and registering it is one step as far as the handler can see: a
 // writer does both holding g_lock with the signals blocked in its own thread, and the handler
@@ -77,7 +85,7 @@ extern "C" void remove_temporaries_and_reraise(int sig) {
   for (Slot& s : g_slots)
     if (s.state.load(std::memory_order_acquire) == 2) ::unlinkat(s.dirfd, s.name, 0);
   unlock();
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < kSignalCount; ++i)
     if (kSignals[i] == sig) ::sigaction(sig, &g_previous[i], nullptr);
   errno = saved;
   ::raise(sig);  // delivered when this handler returns, to the previous action
@@ -86,10 +94,14 @@ extern "C" void remove_temporaries_and_reraise(int sig) {
 void install_handlers() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < kSignalCount; ++i) {
       struct sigaction current {};
       if (::sigaction(kSignals[i], nullptr, &current) != 0) continue;
       if (!(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_IGN) continue;
+      // SIGINT, SIGTERM and SIGHUP are chained to a handler the program has (Python's SIGINT);
+      // the others are taken only at their default action, never from a profiler or a timer.
+      const bool is_default = !(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_DFL;
+      if (i >= 3 && !is_default) continue;
       g_previous[i] = current;
       struct sigaction sa {};
       sa.sa_handler = remove_temporaries_and_reraise;

@@ -134,3 +134,19 @@ TEST_CASE("a spec string holding a NUL is refused: no path is cut short at it") 
   check_refused("nul_image", "[[image]]\nfile = \"img.png\\u0000.exr\"\n", "nul_image.toml:2: image[0].file" + says);
   check_refused("nul_title", "title = \"a\\u0000b\"\n", "nul_title.toml:1: title" + says);
 }
+
+TEST_CASE("a write over the file-size limit (ulimit -f) is a one-line error and leaves no temporary") {
+  const fs::path dir = scratch();
+  write_file(dir / "big.toml", "[canvas]\nwidth = 400\nheight = 400\n[[circle]]\ncenter = [200, 200]\nradius = 150\n");
+  const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && ulimit -f 2 && timeout -s KILL 60 " +
+                          splinefig::test::shell_quote(SPLINEFIG_EXE) + " render big.toml -o keep.png 2> err.txt";
+  const int status = std::system(cmd.c_str());
+  INFO(splinefig::test::slurp(dir / "err.txt"));
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 2);
+  CHECK(splinefig::test::slurp(dir / "err.txt") == "splinefig render: keep.png: write failed (File too large)\n");
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  CHECK(left == std::vector<std::string>{"big.toml", "err.txt"});
+}

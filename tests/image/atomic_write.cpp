@@ -188,6 +188,40 @@ TEST_CASE("atomic write: SIGTERM during parallel writes leaves no temporary file
   }
 }
 
+TEST_CASE("atomic write: every signal that ends the process by default leaves no temporary file") {
+  for (int sig : {SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ, SIGPOLL}) {
+    const auto dir = scratch_dir("signal-" + std::to_string(sig));
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+      std::signal(sig, SIG_DFL);
+      const rlimit no_core{0, 0};
+      ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXCPU and SIGXFSZ would dump core
+      std::vector<std::thread> pool;
+      for (int t = 0; t < 2; ++t)
+        pool.emplace_back([&, t] {
+          const Image im = noise(512, 512, unsigned(t));
+          for (int i = 0;; ++i) write_image((dir / ("w" + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
+        });
+      for (auto& th : pool) th.join();
+      ::_exit(0);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(150));
+    ::kill(pid, sig);
+    int status = 0;
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    INFO("signal " << sig);
+    CHECK(WIFSIGNALED(status));
+    if (WIFSIGNALED(status)) CHECK(WTERMSIG(status) == sig);
+    for (const auto& n : names_in(dir)) {
+      INFO(n);
+      CHECK(n.find(".tmp") == std::string::npos);
+      CHECK_NOTHROW(check_png_structure((dir / n).string()));
+    }
+    fs::remove_all(dir);
+  }
+}
+
 TEST_CASE("atomic write: an inherited SIG_IGN stays ignored") {
   const auto dir = scratch_dir("sig-ign");
   const int status = in_child([&] {
