@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -176,7 +177,7 @@ std::size_t first_non_finite(std::span<const double> v) {
 
 void write_stdout(std::string_view text) {
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Failure("cannot write to stdout", 1);
+    throw Failure(std::string("cannot write to standard output (") + std::strerror(errno ? errno : EIO) + ")", 2);
 }
 
 }  // namespace splinefig::cli

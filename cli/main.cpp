@@ -4,11 +4,14 @@
 #include <splinefig/version.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <map>
+#include <string>
 
 namespace splinefig::cli {
 std::vector<Command>& registry() {
@@ -16,6 +19,21 @@ std::vector<Command>& registry() {
   return commands;
 }
 }  // namespace splinefig::cli
+
+namespace {
+
+// `code`, once everything written to standard output has reached it; else one line on stderr
+// and `failed` (a full disk, a closed pipe or descriptor: `diff >&-` must not look like a match).
+int flushed(int code, const std::string& who, int failed = 2) {
+  std::cout.flush();
+  const bool ok = !std::cout.fail() && std::fflush(stdout) == 0 && !std::ferror(stdout);
+  if (ok) return code;
+  const int err = errno;
+  std::fprintf(stderr, "%s: cannot write to standard output (%s)\n", who.c_str(), std::strerror(err ? err : EIO));
+  return failed;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace splinefig::cli;
@@ -49,11 +67,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return flushed(app.exit(e), "splinefig");
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return flushed(app.exit(e), "splinefig");
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return flushed(app.exit(e), "splinefig");
   } catch (const CLI::ParseError& e) {
     std::string msg = e.what();
     std::replace(msg.begin(), msg.end(), '\n', ' ');
@@ -63,7 +81,7 @@ int main(int argc, char** argv) {
 
   for (CLI::App* sub : app.get_subcommands()) {
     try {
-      return runners.at(sub)();
+      return flushed(runners.at(sub)(), "splinefig " + names[sub], names[sub] == "diff" ? 4 : 2);
     } catch (const Failure& e) {
       std::cerr << "splinefig " << names[sub] << ": " << printable(e.what()) << "\n";
       return e.code;

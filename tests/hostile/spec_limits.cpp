@@ -150,3 +150,26 @@ TEST_CASE("a write over the file-size limit (ulimit -f) is a one-line error and 
   std::sort(left.begin(), left.end());
   CHECK(left == std::vector<std::string>{"big.toml", "err.txt"});
 }
+
+TEST_CASE("a command whose standard output cannot be written says so and fails, never exits 0") {
+  const fs::path dir = scratch();
+  const std::string png = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/reference/renderer/fills.png";
+  struct Case {
+    std::string args, who;
+    int code;
+  };
+  for (const Case& c : {Case{"version", "splinefig version", 2}, {"--version", "splinefig", 2}, {"--help", "splinefig", 2},
+                        {"kernel --basis bspline", "splinefig kernel", 2}, {"diff " + png + " " + png, "splinefig diff", 4},
+                        {"diff --json " + png + " " + png, "splinefig diff", 4}, {"diff -v " + png + " " + png, "splinefig diff", 4}})
+    for (const std::string redirect : {">/dev/full", ">&-"}) {
+      const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && timeout -s KILL 60 " +
+                              splinefig::test::shell_quote(SPLINEFIG_EXE) + " " + c.args + " " + redirect + " 2> err.txt";
+      const int status = std::system(cmd.c_str());
+      const std::string err = splinefig::test::slurp(dir / "err.txt");
+      INFO(c.args << " " << redirect << ": " << err);
+      REQUIRE(WIFEXITED(status));
+      CHECK(WEXITSTATUS(status) == c.code);
+      CHECK_THAT(err, Catch::StartsWith(c.who + ": cannot write to standard output ("));
+      CHECK(splinefig::test::count_lines(err) == 1);
+    }
+}
