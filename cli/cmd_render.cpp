@@ -43,7 +43,6 @@ const splinefig::cli::Registration reg{
         if (ext.size() < 2 || !fig::is_figure_format(ext.substr(1)))
           throw Failure("-o " + a->out + ": the output must end in .png, .exr, .svg or .pdf");
         if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
-        splinefig::cli::check_input_file(a->spec);
         splinefig::cli::check_output_scale(a->scale);
         const int threads = splinefig::cli::check_threads(a->threads);
         const double dpi = splinefig::cli::check_dpi(a->dpi);

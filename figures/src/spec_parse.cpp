@@ -7,6 +7,9 @@
 #include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -314,16 +317,33 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   return spec;
 }
 
+// The rules for a spec read by name, the same for the command line, `figures` and Python: a
+// regular file (a directory is no empty spec; a FIFO or /dev/zero would block or never end),
+// readable, at most kMaxSpecBytes, read no further than that even if it grows meanwhile.
 FigureSpec load_spec(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SpecFileError(path + ": cannot read the spec file");
+  namespace fs = std::filesystem;
+  if (path.find('\0') != std::string::npos) throw SpecFileError("a spec path holding a NUL character");
   std::error_code ec;
-  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > kMaxSpecBytes)
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) {
+    const int err = ec ? ec.value() : ENOENT;
+    throw SpecFileError(path + ": cannot read the spec file (" + std::strerror(err) + ")");
+  }
+  if (fs::is_directory(st)) throw SpecFileError(path + ": is a directory, not a file");
+  if (!fs::is_regular_file(st)) throw SpecFileError(path + ": not a regular file (a FIFO, socket or device)");
+  if (const auto bytes = fs::file_size(path, ec); !ec && bytes > kMaxSpecBytes)
     throw SpecFileError(path + ": the spec file has " + std::to_string(bytes) + " bytes (limit 64 MiB)");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  return parse_spec(ss.str(), path, dir.empty() ? "." : dir);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SpecFileError(path + ": cannot read the spec file (" + std::strerror(errno ? errno : EIO) + ")");
+  std::string text;
+  std::array<char, 1 << 16> buf;
+  while (in.read(buf.data(), buf.size()) || in.gcount() > 0) {
+    text.append(buf.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSpecBytes) throw SpecFileError(path + ": the spec file has more than 64 MiB (limit 64 MiB)");
+  }
+  if (in.bad()) throw SpecFileError(path + ": cannot read the spec file (a read error)");
+  std::string dir = fs::path(path).parent_path().string();
+  return parse_spec(text, path, dir.empty() ? "." : dir);
 }
 
 }  // namespace splinefig::figures
