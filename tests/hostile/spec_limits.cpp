@@ -7,6 +7,15 @@ using namespace splinefig::hostile;
 
 namespace {
 const std::string kBox = "[axes]\nx_range = [0, 10]\ny_range = [0, 10]\n";
+
+// The wait status of `splinefig ARGS REDIRECT 2> err.txt` in `dir`, after the shell command
+// `setup` (a ulimit), under the suite's time limit; ARGS and REDIRECT are shell text.
+int run_shell(const fs::path& dir, const std::string& setup, const std::string& args, const std::string& redirect = "") {
+  const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + (setup.empty() ? "" : " && " + setup) +
+                          " && timeout -s KILL " + std::to_string(kTimeLimit) + " " +
+                          splinefig::test::shell_quote(SPLINEFIG_EXE) + " " + args + " " + redirect + " 2> err.txt";
+  return std::system(cmd.c_str());
+}
 }
 
 TEST_CASE("text and title sizes over 4096 px are refused by the loader, and after --scale") {
@@ -112,9 +121,7 @@ TEST_CASE("a 1000-part table header is refused cleanly on a 256 KiB stack") {
   std::string h = "a";
   for (int i = 1; i < 1000; ++i) h += ".a";
   write_file(dir / "deep.toml", "[" + h + "]\nb = 1\n");
-  const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && ulimit -s 256 && timeout -s KILL 60 " +
-                          splinefig::test::shell_quote(SPLINEFIG_EXE) + " render deep.toml -o deep.png 2> err.txt";
-  const int status = std::system(cmd.c_str());
+  const int status = run_shell(dir, "ulimit -s 256", "render deep.toml -o deep.png");
   INFO(splinefig::test::slurp(dir / "err.txt"));
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 2);
@@ -138,9 +145,7 @@ TEST_CASE("a spec string holding a NUL is refused: no path is cut short at it") 
 TEST_CASE("a write over the file-size limit (ulimit -f) is a one-line error and leaves no temporary") {
   const fs::path dir = scratch();
   write_file(dir / "big.toml", "[canvas]\nwidth = 400\nheight = 400\n[[circle]]\ncenter = [200, 200]\nradius = 150\n");
-  const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && ulimit -f 2 && timeout -s KILL 60 " +
-                          splinefig::test::shell_quote(SPLINEFIG_EXE) + " render big.toml -o keep.png 2> err.txt";
-  const int status = std::system(cmd.c_str());
+  const int status = run_shell(dir, "ulimit -f 2", "render big.toml -o keep.png");
   INFO(splinefig::test::slurp(dir / "err.txt"));
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 2);
@@ -162,9 +167,7 @@ TEST_CASE("a command whose standard output cannot be written says so and fails, 
                         {"kernel --basis bspline", "splinefig kernel", 2}, {"diff " + png + " " + png, "splinefig diff", 4},
                         {"diff --json " + png + " " + png, "splinefig diff", 4}, {"diff -v " + png + " " + png, "splinefig diff", 4}})
     for (const std::string redirect : {">/dev/full", ">&-"}) {
-      const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && timeout -s KILL 60 " +
-                              splinefig::test::shell_quote(SPLINEFIG_EXE) + " " + c.args + " " + redirect + " 2> err.txt";
-      const int status = std::system(cmd.c_str());
+      const int status = run_shell(dir, "", c.args, redirect);
       const std::string err = splinefig::test::slurp(dir / "err.txt");
       INFO(c.args << " " << redirect << ": " << err);
       REQUIRE(WIFEXITED(status));

@@ -155,71 +155,54 @@ TEST_CASE("atomic write: a full disk is an error, the old file stays and no temp
   CHECK(bytes_of(exr) == bytes_of(keep / "figure.exr"));
 }
 
-TEST_CASE("atomic write: SIGTERM during parallel writes leaves no temporary file") {
-  for (int round = 0; round < 8; ++round) {
-    const auto dir = scratch_dir("sigterm-" + std::to_string(round));
-    const pid_t pid = ::fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-      std::signal(SIGTERM, SIG_DFL);  // as in a plain process (the test runner catches it)
-      std::vector<std::thread> pool;
-      for (int t = 0; t < 4; ++t)
-        pool.emplace_back([&, t] {
-          const Image im = noise(512, 512, unsigned(t));
-          for (int i = 0;; ++i) write_image((dir / ("w" + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
-        });
-      for (auto& th : pool) th.join();
-      ::_exit(0);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(150 + 37 * round));
-    ::kill(pid, SIGTERM);
-    int status = 0;
-    REQUIRE(::waitpid(pid, &status, 0) == pid);
-    CHECK(WIFSIGNALED(status));
-    if (WIFSIGNALED(status)) CHECK(WTERMSIG(status) == SIGTERM);
-    for (const auto& n : names_in(dir)) {
-      INFO("round " << round << ": " << n);
-      CHECK(n.find(".tmp") == std::string::npos);
-      // Complete PNG structure, every CRC and the whole zlib stream (no OpenImageIO in this
-      // process: its worker threads would be copied half-locked into the next round's fork).
-      CHECK_NOTHROW(check_png_structure((dir / n).string()));
-    }
-    fs::remove_all(dir);
+namespace {
+
+// Threads writing PNGs in a forked child at the signal's default action; `sig` after
+// `delay_ms`: the child ends by that signal and leaves only complete files.
+void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const std::string& tag) {
+  const auto dir = scratch_dir(tag);
+  const pid_t pid = ::fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    std::signal(sig, SIG_DFL);  // as in a plain process (the test runner catches some)
+    const rlimit no_core{0, 0};
+    ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXCPU and SIGXFSZ would dump core
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        const Image im = noise(512, 512, unsigned(t));
+        for (int i = 0;; ++i) write_image((dir / ("w" + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
+      });
+    for (auto& th : pool) th.join();
+    ::_exit(0);
   }
+  std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+  ::kill(pid, sig);
+  int status = 0;
+  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  INFO(tag);
+  CHECK(WIFSIGNALED(status));
+  if (WIFSIGNALED(status)) CHECK(WTERMSIG(status) == sig);
+  for (const auto& n : names_in(dir)) {
+    INFO(n);
+    CHECK(n.find(".tmp") == std::string::npos);
+    // Complete PNG structure, every CRC and the whole zlib stream (no OpenImageIO in this
+    // process: its worker threads would be copied half-locked into the next round's fork).
+    CHECK_NOTHROW(check_png_structure((dir / n).string()));
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+TEST_CASE("atomic write: SIGTERM during parallel writes leaves no temporary file") {
+  for (int round = 0; round < 8; ++round)
+    check_signal_leaves_no_temporary(SIGTERM, 4, 150 + 37 * round, "sigterm-" + std::to_string(round));
 }
 
 TEST_CASE("atomic write: every signal that ends the process by default leaves no temporary file") {
-  for (int sig : {SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ, SIGPOLL}) {
-    const auto dir = scratch_dir("signal-" + std::to_string(sig));
-    const pid_t pid = ::fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-      std::signal(sig, SIG_DFL);
-      const rlimit no_core{0, 0};
-      ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXCPU and SIGXFSZ would dump core
-      std::vector<std::thread> pool;
-      for (int t = 0; t < 2; ++t)
-        pool.emplace_back([&, t] {
-          const Image im = noise(512, 512, unsigned(t));
-          for (int i = 0;; ++i) write_image((dir / ("w" + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
-        });
-      for (auto& th : pool) th.join();
-      ::_exit(0);
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(150));
-    ::kill(pid, sig);
-    int status = 0;
-    REQUIRE(::waitpid(pid, &status, 0) == pid);
-    INFO("signal " << sig);
-    CHECK(WIFSIGNALED(status));
-    if (WIFSIGNALED(status)) CHECK(WTERMSIG(status) == sig);
-    for (const auto& n : names_in(dir)) {
-      INFO(n);
-      CHECK(n.find(".tmp") == std::string::npos);
-      CHECK_NOTHROW(check_png_structure((dir / n).string()));
-    }
-    fs::remove_all(dir);
-  }
+  for (int sig : {SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ, SIGPOLL})
+    check_signal_leaves_no_temporary(sig, 2, 150, "signal-" + std::to_string(sig));
 }
 
 TEST_CASE("atomic write: an inherited SIG_IGN stays ignored") {
