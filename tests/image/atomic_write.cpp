@@ -171,7 +171,14 @@ void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const 
     for (int t = 0; t < threads; ++t)
       pool.emplace_back([&, t] {
         const Image im = noise(512, 512, unsigned(t));
-        for (int i = 0;; ++i) write_image((dir / ("w" + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
+        try {
+          for (int i = 0;; ++i) write_image((dir / ("w" + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
+        } catch (const UnwritableImage&) {
+          // Once the handler runs, a write another thread starts is refused ("the process is
+          // being stopped by a signal"); this thread then waits for the signal to end the process
+          // (an uncaught exception would end it first, by SIGABRT).
+          for (;;) ::pause();
+        }
       });
     for (auto& th : pool) th.join();
     ::_exit(0);
