@@ -473,6 +473,9 @@ def _path(value: Any, name: str) -> str:
         value = os.fspath(value)
     if not isinstance(value, str):
         raise TypeError(f"{name}: expected a path, got {type(value).__name__}")
+    if "\0" in value:
+        # The C library would cut the path there: write_image("a\0b.png") wrote a file "a".
+        raise ValueError(f"{name}: a path holding a NUL character")
     return value
 
 

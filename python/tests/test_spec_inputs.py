@@ -14,7 +14,7 @@ import splinefig
         ("/dev/zero", "/dev/zero: not a regular file (a FIFO, socket or device)"),
         ("/dev/urandom", "/dev/urandom: not a regular file (a FIFO, socket or device)"),
         ("/", "/: is a directory, not a file"),
-        ("a\0b.toml", "a spec path holding a NUL character"),
+        ("a\0b.toml", "spec: a path holding a NUL character"),
         ("/no/such/spec.toml", "/no/such/spec.toml: cannot read the spec file (No such file or directory)"),
     ],
 )
@@ -30,3 +30,12 @@ def test_render_spec_refuses_a_fifo_without_blocking(tmp_path):
     with pytest.raises(ValueError) as e:
         splinefig.render_spec(str(fifo))
     assert str(e.value).endswith("spec.toml: not a regular file (a FIFO, socket or device)")
+
+
+def test_no_function_takes_a_path_holding_a_nul(tmp_path):
+    image = splinefig.image_buffer(2, 2, 4)
+    with pytest.raises(ValueError, match="path: a path holding a NUL character"):
+        splinefig.write_image(str(tmp_path / "a\0b.png"), image)
+    with pytest.raises(ValueError, match="path: a path holding a NUL character"):
+        splinefig.read_image(str(tmp_path / "a\0b.png"))
+    assert list(tmp_path.iterdir()) == []
