@@ -53,7 +53,8 @@ std::string key_depth_problem(std::string_view text, const std::string& file) {
   while (i < text.size()) {
     const char c = text[i];
     if (c == '"' || c == '\'') {
-      const bool multi = text.substr(i, 3) == std::string_view(c == '"' ? "\"\"\"" : "'''");
+      const std::string_view fence = c == '"' ? "\"\"\"" : "'''";
+      const bool multi = text.substr(i, 3) == fence;
       const std::size_t start_line = line;
       i += multi ? 3 : 1;
       while (i < text.size()) {
@@ -63,7 +64,7 @@ std::string key_depth_problem(std::string_view text, const std::string& file) {
           i += 2;
           continue;
         }
-        if (text[i] == c && (!multi || text.substr(i, 3) == std::string_view(c == '"' ? "\"\"\"" : "'''"))) {
+        if (text[i] == c && (!multi || text.substr(i, 3) == fence)) {
           i += multi ? 3 : 1;
           // a multi-line string may end in up to two more quotes
           while (multi && i < text.size() && text[i] == c) ++i;
@@ -274,13 +275,17 @@ bool TableReader::boolean(std::string_view key, bool fallback) {
   return b->get();
 }
 
+// No spec string needs a NUL, and a path holding one would be cut there ("a\0b" opened "a").
+void TableReader::check_no_nul(const toml::node& n, std::string_view key, const std::string& s) const {
+  if (s.find('\0') != std::string::npos) fail_at(n, key, "a string holding a NUL character (\\u0000)");
+}
+
 std::optional<std::string> TableReader::opt_string(std::string_view key) {
   const toml::node* n = node(key);
   if (!n) return std::nullopt;
   auto s = n->as_string();
   if (!s) fail_at(*n, key, "expected a string");
-  // No spec string needs a NUL, and a path holding one would be cut there ("a\0b" opened "a").
-  if (s->get().find('\0') != std::string::npos) fail_at(*n, key, "a string holding a NUL character (\\u0000)");
+  check_no_nul(*n, key, s->get());
   return s->get();
 }
 
@@ -361,7 +366,7 @@ std::vector<std::string> TableReader::strings(std::string_view key) {
   for (const toml::node& e : *a) {
     auto s = e.as_string();
     if (!s) fail_at(e, key, "expected an array of strings");
-    if (s->get().find('\0') != std::string::npos) fail_at(e, key, "a string holding a NUL character (\\u0000)");
+    check_no_nul(e, key, s->get());
     out.push_back(s->get());
   }
   return out;

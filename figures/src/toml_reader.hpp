@@ -75,6 +75,8 @@ class TableReader {
 
   [[noreturn]] void fail(std::string_view key, const std::string& message) const;
   [[noreturn]] void fail_at(const toml::node& node, std::string_view key, const std::string& message) const;
+  // Fails at `node` if the string `s` read from it holds a NUL.
+  void check_no_nul(const toml::node& node, std::string_view key, const std::string& s) const;
   std::string where() const;  // "FILE:LINE" of the table
   std::string key_path(std::string_view key) const;
   // "FILE:LINE: KEY", the prefix of fail(key, ...): for checks made after loading.

@@ -4,6 +4,7 @@
 // Adam7 passes). libpng treats "not enough image data" as a benign error, so a PNG cut inside
 // its pixel data can decode to garbage rows without failing: this check is what catches it.
 #include "png_check.hpp"
+#include "origin.hpp"
 
 #include <splinefig/image/io.hpp>
 
@@ -104,9 +105,7 @@ void check_png_header(const std::string& path) {
       unsigned char o[8];
       if (!in.read(reinterpret_cast<char*>(o), sizeof o)) break;
       const auto x = static_cast<std::int32_t>(be32(o)), y = static_cast<std::int32_t>(be32(o + 4));
-      if (std::abs(std::int64_t{x}) > max_image_origin || std::abs(std::int64_t{y}) > max_image_origin)
-        bad(path, "data window origin (" + std::to_string(x) + ", " + std::to_string(y) +
-                      ") out of range (limit 2^30 either way)");
+      if (std::string problem = detail::origin_problem(x, y); !problem.empty()) bad(path, problem);
       break;
     }
     in.seekg(std::streamoff(length) + 4, std::ios::cur);

@@ -3,6 +3,7 @@
 #include <splinefig/image/srgb.hpp>
 
 #include "one_line.hpp"
+#include "origin.hpp"
 #include "exr_check.hpp"
 #include "png_check.hpp"
 
@@ -77,9 +78,7 @@ std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spe
   if (std::uint64_t(spec.width) > max_image_side || std::uint64_t(spec.height) > max_image_side)
     unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                          " pixels, limit 65536 a side)");
-  if (std::abs(std::int64_t(spec.x)) > max_image_origin || std::abs(std::int64_t(spec.y)) > max_image_origin)
-    unreadable(path, "data window origin (" + std::to_string(spec.x) + ", " + std::to_string(spec.y) +
-                         ") out of range (limit 2^30 either way)");
+  if (std::string problem = detail::origin_problem(spec.x, spec.y); !problem.empty()) unreadable(path, problem);
   return values;
 }
 
