@@ -8,6 +8,7 @@
 // difference from splinefig's result as a counter (the accuracy behind the speed).
 #include <benchmark/benchmark.h>
 
+#include <splinefig/base/parallel.hpp>
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/spline/kernel.hpp>
 
@@ -52,7 +53,7 @@ Image& output(int size) {
   return size == kUp ? up : down;
 }
 
-int all_threads() { return resolve_threads(0); }
+int all_threads() { return worker_count(0); }
 
 void splinefig_resample(benchmark::State& state, int size, const std::string& filter, int threads) {
   const Kernel f = parse_kernel(filter);

@@ -7,10 +7,9 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <atomic>
-#include <system_error>
-#include <thread>
 #include <vector>
+
+#include "splinefig/base/parallel.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -301,24 +300,7 @@ Metrics idiff_metrics(const Image& a_in, const Image& b_in, float failthresh, fl
 #endif
     chunk_generic(L, p0, p1, warnthresh, failthresh, parts[i]);
   };
-  unsigned threads = options.threads > 0 ? unsigned(options.threads) : std::max(1u, std::thread::hardware_concurrency());
-  threads = unsigned(std::min<std::size_t>(threads, nchunks));
-  if (threads <= 1) {
-    for (std::size_t i = 0; i < nchunks; ++i) run(i);
-  } else {
-    // Chunks handed out in turn; threads the system refuses leave theirs to the others.
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-      for (std::size_t i; (i = next.fetch_add(1)) < nchunks;) run(i);
-    };
-    std::vector<std::thread> pool;
-    try {
-      for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-    } catch (const std::system_error&) {
-    }
-    work();
-    for (auto& th : pool) th.join();
-  }
+  parallel_for(nchunks, options.threads, [&](std::size_t i, int) { run(i); });  // each chunk sums alone
 
   Partial total;
   for (const Partial& p : parts) {

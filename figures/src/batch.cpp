@@ -1,20 +1,17 @@
-// A pool of figure workers whose results come back in spec order (see batch.hpp).
+// Figures rendered in parallel, their results handed back in spec order (see batch.hpp).
 #include <splinefig/figures/batch.hpp>
+#include <splinefig/base/parallel.hpp>
 #include <splinefig/figures/output.hpp>
 #include <splinefig/image/io.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <mutex>
 #include <string>
-#include <system_error>
-#include <thread>
 
 namespace splinefig::figures {
 namespace {
@@ -78,43 +75,25 @@ bool needs_image_io(const std::vector<SpecFile>& specs, const BatchOptions& o) {
 
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
                   const std::function<void(BatchResult&)>& done) {
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  const size_t workers =
-      std::min<size_t>(specs.size(), options.threads > 0 ? static_cast<unsigned>(options.threads) : hw);
+  const int workers = static_cast<int>(std::min<std::size_t>(specs.size(), static_cast<std::size_t>(worker_count(options.threads))));
   const int raster_threads = workers > 1 ? 1 : options.threads;
-  std::vector<std::optional<BatchResult>> results(specs.size());
-  std::mutex mutex;
-  std::condition_variable ready;
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t i = next++; i < specs.size(); i = next++) {
-      BatchResult r = render_one(specs[i], options, raster_threads);
-      std::lock_guard<std::mutex> lock(mutex);
-      results[i] = std::move(r);
-      ready.notify_all();
-    }
-  };
   // The image I/O module first, if the batch may use it: a library it loads starts threads of its
   // own when loaded, and under a thread limit those must not find the budget taken by the workers.
   if (needs_image_io(specs, options)) preload_image_io();
-  // Workers the system refuses (RLIMIT_NPROC, memory): the specs go to those that started, or
-  // are rendered on this thread if none did.
-  std::vector<std::thread> pool;
-  try {
-    for (size_t k = 0; k < workers; ++k) pool.emplace_back(work);
-  } catch (const std::system_error&) {
-  }
-  if (pool.empty()) work();
-  for (size_t i = 0; i < specs.size(); ++i) {
-    BatchResult r;
-    {
-      std::unique_lock<std::mutex> lock(mutex);
-      ready.wait(lock, [&] { return results[i].has_value(); });
-      r = std::move(*results[i]);
+  // Each result is kept until those before it are in; then the thread that completed it hands
+  // it and every following one that is ready to `done`, in spec order, under the lock.
+  std::vector<std::optional<BatchResult>> results(specs.size());
+  std::mutex mutex;
+  std::size_t handed = 0;  // results[0, handed) went to done
+  parallel_for(specs.size(), workers, [&](std::size_t i, int) {
+    BatchResult r = render_one(specs[i], options, raster_threads);
+    std::lock_guard<std::mutex> lock(mutex);
+    results[i] = std::move(r);
+    for (; handed < results.size() && results[handed]; ++handed) {
+      done(*results[handed]);
+      results[handed].reset();
     }
-    done(r);
-  }
-  for (auto& t : pool) t.join();
+  });
 }
 
 }  // namespace splinefig::figures

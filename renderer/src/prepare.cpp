@@ -1,8 +1,8 @@
 #include "prepare.hpp"
 
 #include "huge_pages.hpp"
-#include "parallel.hpp"
 #include "stroke.hpp"
+#include "splinefig/base/parallel.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -68,7 +68,7 @@ bool outline_in_pieces(OutlinePieces& pieces, Geometry& g, const Box& clip, Vec2
       parts[k] = Geometry{};
     };
     const std::size_t mine = split_from_both_ends(
-        threads, pieces.size(), [&](std::size_t k) { build(k, g); }, [&](std::size_t k) { build(k, parts[k]); });
+        pieces.size(), threads, [&](std::size_t k) { build(k, g); }, [&](std::size_t k) { build(k, parts[k]); });
     if (repeats) {
       g.verts.resize(verts0);
       g.chains.resize(chains0);
@@ -85,8 +85,7 @@ bool outline_in_pieces(OutlinePieces& pieces, Geometry& g, const Box& clip, Vec2
     }
     g.verts.resize(vert0[pieces.size()]);  // unwritten: the copies below write them
     g.chains.resize(chain0[pieces.size()]);
-    auto place_helpers = [&](std::size_t i) { place(mine + i); };
-    split_from_both_ends(threads, pieces.size() - mine, place_helpers, place_helpers);
+    parallel_for(pieces.size() - mine, threads, [&](std::size_t i, int) { place(mine + i); });
     return true;
   }
 }

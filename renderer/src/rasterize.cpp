@@ -9,12 +9,10 @@
 #include "prepare.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
-#include <mutex>
-#include <system_error>
-#include <thread>
+#include <memory>
+
+#include "splinefig/base/parallel.hpp"
 
 namespace splinefig::render {
 namespace detail {
@@ -110,8 +108,7 @@ Image rasterize(const Scene& scene, int threads) {
     }
   };
   const int bands = (H + kBandRows - 1) / kBandRows;
-  int nthreads = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  nthreads = std::min(nthreads, bands);
+  const int nthreads = std::min(worker_count(threads), bands);
 
   if (nthreads <= 1) {
     // One thread: each item is built, drawn and dropped in turn, so its geometry is still in
@@ -158,31 +155,9 @@ Image rasterize(const Scene& scene, int threads) {
     auto run_begin = [&](std::size_t r) { return r * items.size() / runs; };
     for (std::size_t r = 0; r < runs; ++r)
       for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) run_of[i] = static_cast<std::uint32_t>(r);
-    std::atomic<std::size_t> next_run{0};
-    std::mutex failure_mutex;
-    std::exception_ptr failure;
-    auto preparer = [&]() {
-      try {
-        for (;;) {
-          const std::size_t r = next_run.fetch_add(1);
-          if (r >= runs) return;
-          for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i)
-            prepare(i, prep[i], geoms[r], nthreads);
-        }
-      } catch (...) {  // rethrown on this thread once every preparer has stopped
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next_run = runs;
-      }
-    };
-    std::vector<std::thread> pool;
-    try {
-      for (int t = 1; t < nthreads; ++t) pool.emplace_back(preparer);
-    } catch (const std::system_error&) {
-    }
-    preparer();
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    parallel_for(runs, nthreads, [&](std::size_t r, int) {
+      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) prepare(i, prep[i], geoms[r], nthreads);
+    });
   }
   // Which items touch which band, in item order.
   std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
@@ -192,35 +167,30 @@ Image rasterize(const Scene& scene, int threads) {
       band_items[static_cast<std::size_t>(b)].push_back(i);
   }
 
-  std::atomic<int> next{0};
-  auto worker = [&]() {
+  // Each thread keeps its scratch (a band's accumulators, the sweep's and the filter's state)
+  // across the bands it draws; a band is drawn the same whichever thread draws it.
+  struct Scratch {
     BoxBand band;
-    band.reset(W, kBandRows);
     FilterScratch fs;
     StripSweep sweep;
-    for (;;) {
-      const int b = next.fetch_add(1);
-      if (b >= bands) return;
-      const int r0 = b * kBandRows, r1 = std::min(H, r0 + kBandRows);
-      clear_rows(r0, r1);  // by the band's thread, like everything else in its rows
-      for (std::uint32_t i : band_items[static_cast<std::size_t>(b)]) {
-        const Prepared& p = prep[i];
-        const Geometry& g = geoms[run_of[i]];
-        if (p.raster) composite_raster(*p.raster, img, r0, r1);
-        else if (box) render_box(g, p, img, r0, r1, band, sweep);
-        else render_filtered(g, p, grid, img, r0, r1, fs, sweep);
-      }
-    }
   };
-  // The system may refuse threads (RLIMIT_NPROC, memory): the bands are shared out among the
-  // threads that started, or drawn by this one if none did; the bytes are the same.
-  std::vector<std::thread> pool;
-  try {
-    for (int t = 0; t < nthreads; ++t) pool.emplace_back(worker);
-  } catch (const std::system_error&) {
-  }
-  if (pool.empty()) worker();
-  for (auto& t : pool) t.join();
+  std::vector<std::unique_ptr<Scratch>> scratch(static_cast<std::size_t>(nthreads));
+  parallel_for(static_cast<std::size_t>(bands), nthreads, [&](std::size_t b, int worker) {
+    auto& s = scratch[static_cast<std::size_t>(worker)];
+    if (!s) {
+      s = std::make_unique<Scratch>();
+      s->band.reset(W, kBandRows);
+    }
+    const int r0 = static_cast<int>(b) * kBandRows, r1 = std::min(H, r0 + kBandRows);
+    clear_rows(r0, r1);  // by the band's thread, like everything else in its rows
+    for (std::uint32_t i : band_items[b]) {
+      const Prepared& p = prep[i];
+      const Geometry& g = geoms[run_of[i]];
+      if (p.raster) composite_raster(*p.raster, img, r0, r1);
+      else if (box) render_box(g, p, img, r0, r1, s->band, s->sweep);
+      else render_filtered(g, p, grid, img, r0, r1, s->fs, s->sweep);
+    }
+  });
   return img;
 }
 

@@ -2,12 +2,12 @@
 #include <splinefig/resample/prefilter.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <complex>
 #include <string>
-#include <system_error>
-#include <thread>
+#include <vector>
+
+#include "splinefig/base/parallel.hpp"
 
 namespace splinefig {
 namespace {
@@ -133,20 +133,13 @@ void solve(const Solver& s, float* base, long stride, long L, std::vector<double
   }
 }
 
+// Runs work(c, scratch) for each c in [0, count), each thread with a scratch vector of its own.
 template <class F>
-void parallel_for(long count, int threads, F&& work) {
-  std::atomic<long> next{0};
-  auto run = [&] {
-    std::vector<double> tmp;
-    for (long c; (c = next.fetch_add(1)) < count;) work(c, tmp);
-  };
-  std::vector<std::thread> pool;
-  try {  // threads the system refuses: the work goes to those that started (and this one)
-    for (long t = 1; t < std::min<long>(threads, count); ++t) pool.emplace_back(run);
-  } catch (const std::system_error&) {
-  }
-  run();
-  for (auto& t : pool) t.join();
+void for_each_line(long count, int threads, F&& work) {
+  std::vector<std::vector<double>> scratch(static_cast<std::size_t>(worker_count(threads)));
+  parallel_for(static_cast<std::size_t>(count), threads, [&](std::size_t c, int worker) {
+    work(static_cast<long>(c), scratch[static_cast<std::size_t>(worker)]);
+  });
 }
 
 }  // namespace
@@ -178,17 +171,16 @@ void prefilter_line(float* p, long n, long stride, const SampledKernel& h, Edge 
 void prefilter(Image& img, const Kernel& k, Edge edge, int threads) {
   const SampledKernel h = sampled_kernel(k);
   if (h.left == 0 && h.right == 0) return;  // an interpolating kernel: the identity
-  threads = resolve_threads(threads);
   const long C = img.channels, W = img.width, H = img.height;
   // Rows: the C channels of a pixel are the lanes of one vector, the pixels the line.
   const Solver rows = make_solver(h, edge, W);
-  parallel_for(H, threads, [&](long y, std::vector<double>& tmp) {
+  for_each_line(H, threads, [&](long y, std::vector<double>& tmp) {
     solve(rows, img.row(static_cast<int>(y)), C, C, tmp);
   });
   // Columns: a block of consecutive floats of every row is one vector, the rows the line.
   const Solver cols = make_solver(h, edge, H);
   const long stride = W * C, block = 256, blocks = (stride + block - 1) / block;
-  parallel_for(blocks, threads, [&](long b, std::vector<double>& tmp) {
+  for_each_line(blocks, threads, [&](long b, std::vector<double>& tmp) {
     solve(cols, img.pixels.data() + b * block, stride, std::min(block, stride - b * block), tmp);
   });
 }

@@ -12,14 +12,12 @@
 // changes a result (the same operations in the same order, only wider or stored differently).
 #include <splinefig/resample/prefilter.hpp>
 #include <splinefig/resample/resample.hpp>
+#include <splinefig/base/parallel.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <system_error>
-#include <thread>
 
 #if defined(__SSE__)
 #include <xmmintrin.h>
@@ -284,17 +282,7 @@ RowSplit split_row(const AxisWeights& ax, int C) {
 
 template <class F>
 void parallel_chunks(int chunks, int threads, F&& work) {
-  std::atomic<int> next{0};
-  auto run = [&] {
-    for (int c; (c = next.fetch_add(1)) < chunks;) work(c);
-  };
-  std::vector<std::thread> pool;
-  try {  // threads the system refuses: the chunks go to those that started (and this one)
-    for (int t = 1; t < std::min(threads, chunks); ++t) pool.emplace_back(run);
-  } catch (const std::system_error&) {
-  }
-  run();
-  for (auto& t : pool) t.join();
+  parallel_for(static_cast<std::size_t>(chunks), threads, [&](std::size_t c, int) { work(static_cast<int>(c)); });
 }
 
 struct Plan {
@@ -451,12 +439,6 @@ void vertical_first(const Plan& p, int threads) {
 
 }  // namespace
 
-int resolve_threads(int threads) {
-  if (threads > 0) return std::min(threads, kMaxResampleThreads);
-  const unsigned hw = std::thread::hardware_concurrency();
-  return hw == 0 ? 1 : static_cast<int>(hw);
-}
-
 void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const ResampleOptions& opt) {
   if (src_in.width < 1 || src_in.height < 1 || src_in.channels < 1)
     throw std::invalid_argument("resample: the source image is empty");
@@ -467,7 +449,7 @@ void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const R
     throw std::invalid_argument("resample: the output must have the source's channel count");
   if (dst.pixels.size() != static_cast<size_t>(dst.height) * dst.row_stride())
     throw std::invalid_argument("resample: pixel buffer size does not match the image size");
-  const int threads = resolve_threads(opt.threads);
+  const int threads = worker_count(opt.threads);
   Image coefficients;
   ImageView src = src_in;
   if (opt.interpolating) {  // the prefilter works in place, on a packed copy

@@ -1,5 +1,6 @@
 // docs/limits.md states the limits the code enforces: each row of its table that has a public
 // constant says that constant's value (the refusal messages are checked by the other cases).
+#include <splinefig/base/limits.hpp>
 #include <splinefig/figures/axes.hpp>
 #include <splinefig/image/io.hpp>
 #include <splinefig/figures/spec.hpp>
@@ -47,7 +48,7 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"text and title font sizes, at 1x and after `--scale`", std::to_string(int(f::kMaxFontSize)) + " px"},
       {"ticks per axis (explicit, or from `*_tick_step`)", std::to_string(f::kMaxTicks)},
       {"`x_marks`, `y_marks`, curve `marks`", std::to_string(f::kMaxMarks)},
-      {"`--threads` (every command) and the resampler's library thread count", std::to_string(splinefig::kMaxResampleThreads)},
+      {"`--threads` (every command) and the resampler's library thread count", std::to_string(splinefig::kMaxThreads)},
       {"image read: either side declared in the header", std::to_string(splinefig::max_image_side) + " px"},
       {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},
   };

@@ -1,5 +1,7 @@
 // The resampler's library entry point bounds the worker count as the command line does: a
 // count of INT_MAX gives the bytes of one thread, no overflow in the chunk arithmetic.
+#include <splinefig/base/limits.hpp>
+#include <splinefig/base/parallel.hpp>
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/spline/kernel.hpp>
 
@@ -15,7 +17,7 @@ TEST_CASE("resample with INT_MAX threads gives the result of one thread") {
   ResampleOptions one, huge;
   one.threads = 1;
   huge.threads = INT_MAX;
-  CHECK(resolve_threads(INT_MAX) == kMaxResampleThreads);
+  CHECK(worker_count(INT_MAX) == kMaxThreads);
   const Image a = resample(src, 300, 200, k, one), b = resample(src, 300, 200, k, huge);
   CHECK(a.pixels == b.pixels);
 }

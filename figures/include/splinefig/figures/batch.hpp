@@ -32,8 +32,10 @@ struct BatchResult {
 // Loads, renders and writes every spec. Figures render in parallel, one per worker: a
 // figure's serial parts (text, PNG encoding) dominate, so this beats splitting one figure
 // across threads; with one worker the rasterizer gets the threads instead. The images do not
-// depend on the thread count. `done` is called on the calling thread, in spec order, as each
-// result becomes available.
+// depend on the thread count. `done` is called once per spec, in spec order, one call at a time
+// (from whichever thread completed the result, with the batch's lock held: keep it short), as
+// soon as the results before it are in. If `done` throws, no further figure is started and the
+// exception is rethrown here once the figures under way have finished.
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
                   const std::function<void(BatchResult&)>& done);
 

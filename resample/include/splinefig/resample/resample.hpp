@@ -49,7 +49,7 @@ AxisWeights axis_weights(const Kernel& k, int src, int dst);
 struct ResampleOptions {
   Edge edge = Edge::clamp;
   bool interpolating = false;  // apply the inverse prefilter first (prefilter.hpp)
-  int threads = 0;             // 0: all hardware threads
+  int threads = 0;             // 0: all hardware threads; at most kMaxThreads (base/limits.hpp)
 };
 
 // Resamples `src` into `dst`, whose width and height give the new size; dst.channels must
@@ -60,10 +60,5 @@ struct ResampleOptions {
 void resample_into(const ImageView& src, Image& dst, const Kernel& k, const ResampleOptions& opt = {});
 void resample_into(const Image& src, Image& dst, const Kernel& k, const ResampleOptions& opt = {});
 Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt = {});
-
-// The worker count `threads` (0: hardware) resolves to, at most kMaxResampleThreads (as the
-// command line's --threads): a huge count never reaches thread or chunk arithmetic.
-inline constexpr int kMaxResampleThreads = 256;
-int resolve_threads(int threads);
 
 }  // namespace splinefig
