@@ -157,7 +157,9 @@ struct Fd {
 // Removes temporary files of `filename` left by processes that no longer exist (killed with
 // SIGKILL, or a power cut). Files of live processes, and names this process did not make, stay.
 void remove_stale_temporaries(int dirfd, const std::string& filename) {
-  const std::string head = "." + filename.substr(0, 200) + ".splinefig-";
+  // '.', not ".": GCC 12 warns of a bogus overlap (-Wrestrict, GCC PR 105329) for a
+  // one-character string literal + a temporary std::string; also in temporary_name.
+  const std::string head = '.' + filename.substr(0, 200) + ".splinefig-";
   const int fd = ::dup(dirfd);
   if (fd < 0) return;
   DIR* d = ::fdopendir(fd);
@@ -192,7 +194,7 @@ bool same_file(const std::string& a, const std::string& b) {
 
 std::string temporary_name(const std::string& filename, long pid, unsigned long n) {
   // 1 + 200 + ".splinefig-" (11) + pid (<= 20) + "-" + n (<= 20) + ".tmp" (4) < 256.
-  std::string name = "." + filename.substr(0, 200);
+  std::string name = '.' + filename.substr(0, 200);
   name += ".splinefig-" + std::to_string(pid) + "-" + std::to_string(n) + ".tmp";
   return name;
 }
