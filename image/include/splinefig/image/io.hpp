@@ -57,10 +57,13 @@ struct FileFormat {
 
 Image read_image(const std::string& path, ReadMode mode = ReadMode::as_stored, FileFormat* format = nullptr);
 
+// Every member has a default member initializer, so that a designated initializer naming some
+// ({.bits = 16}) leaves the others at their defaults, and GCC does not warn of them
+// (-Wmissing-field-initializers warns of a member without one).
 struct WriteOptions {
   int bits = 8;              // 8 or 16 (PNG), 8 (JPEG), 8, 16 or 32 = float (TIFF); EXR is float32
-  std::string software;      // "splinefig <version>" when empty
-  std::string description;   // ImageDescription, e.g. the spec name; none when empty
+  std::string software{};    // "splinefig <version>" when empty
+  std::string description{}; // ImageDescription, e.g. the spec name; none when empty
   double dpi = 0;            // pixels per inch (PNG pHYs, EXR/TIFF XResolution); none when 0
   // The file's DateTime (EXR, TIFF) in seconds since 1970 UTC, e.g. SOURCE_DATE_EPOCH; none when
   // negative, so that the same image always gives the same bytes.
