@@ -204,10 +204,7 @@ void render_filtered(const Geometry& g, const Prepared& p, const FilterGrid& gri
         for (int n = 0; n < D; ++n) v += grid.b[static_cast<std::size_t>(pp * D + n)] * t[n];
       }
       if (std::abs(v) > 1e-12) {
-        float* px_ = img.pixel(px, py);
-        const float c = static_cast<float>(v);
-        const float k = 1.0f - p.color[3] * c;
-        for (int ch = 0; ch < 4; ++ch) px_[ch] = p.color[ch] * c + px_[ch] * k;
+        over(img.pixel(px, py), p.paint, static_cast<float>(v));
       }
     }
   }

@@ -92,14 +92,10 @@ bool outline_in_pieces(OutlinePieces& pieces, Geometry& g, const Box& clip, Vec2
 
 }  // namespace
 
-void prepare_item(const Scene::Item& it, Vec2 shift, const Box& clip, Geometry& g, Prepared& out, int /*canvas_w*/,
-                  int canvas_h, int threads) {
+void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, const Box& clip, Geometry& g,
+                  Prepared& out, int canvas_h, int threads) {
   using K = Scene::Item::Kind;
-  const float a = it.color.a;
-  out.color[0] = it.color.r * a;
-  out.color[1] = it.color.g * a;
-  out.color[2] = it.color.b * a;
-  out.color[3] = a;
+  out.paint = comp.paint(it.color);
   if (it.kind == K::Image) {
     // The rows the rectangle touches (composite_raster picks the pixel centres inside).
     out.raster = it.raster.get();

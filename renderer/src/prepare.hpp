@@ -1,6 +1,7 @@
 #pragma once
 // From a Scene's items to what the rasterizer consumes: each item's exact geometry as
 // y-monotone chains (clipped to the region that can affect the canvas).
+#include "compositor.hpp"
 #include "scene_item.hpp"
 #include "sweep.hpp"
 
@@ -9,7 +10,7 @@ namespace splinefig::render::detail {
 struct Prepared {
   Shape shape;
   const Scene::Item::Raster* raster = nullptr;  // images only
-  float color[4]{};    // premultiplied linear RGBA
+  Paint paint;         // the item's colour, premultiplied in the canvas's blend space
   int row0 = 0, row1 = 0;  // canvas rows the item can touch, [row0, row1)
 };
 
@@ -17,7 +18,7 @@ struct Prepared {
 // the coordinates the rasterizer works in (already shifted to the filter's cell grid).
 // `shift` is subtracted from every input point. A long stroke's outline is built in pieces on
 // up to `threads` threads (stroke.hpp: OutlinePieces); the result does not depend on `threads`.
-void prepare_item(const Scene::Item& item, Vec2 shift, const Box& clip, Geometry& g, Prepared& out,
-                  int canvas_w, int canvas_h, int threads = 1);
+void prepare_item(const Scene::Item& item, const Compositor& comp, Vec2 shift, const Box& clip, Geometry& g,
+                  Prepared& out, int canvas_h, int threads = 1);
 
 }  // namespace splinefig::render::detail

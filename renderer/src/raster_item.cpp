@@ -6,7 +6,7 @@
 
 namespace splinefig::render::detail {
 
-void composite_raster(const Scene::Item::Raster& r, Image& img, int r0, int r1) {
+void composite_raster(const Scene::Item::Raster& r, const Compositor& comp, Image& img, int r0, int r1) {
   const Image& src = *r.image;
   const double x0 = r.p0.x, y0 = r.p0.y, x1 = r.p1.x, y1 = r.p1.y;
   const double xlo = std::min(x0, x1), xhi = std::max(x0, x1), ylo = std::min(y0, y1), yhi = std::max(y0, y1);
@@ -40,8 +40,7 @@ void composite_raster(const Scene::Item::Raster& r, Image& img, int r0, int r1) 
           s[k] = (1 - ty) * ((1 - tx) * fetch(px, py, k) + tx * fetch(px + 1, py, k)) +
                  ty * ((1 - tx) * fetch(px, py + 1, k) + tx * fetch(px + 1, py + 1, k));
       }
-      float* d = img.pixel(x, y);
-      for (int k = 0; k < 4; ++k) d[k] = s[k] + d[k] * (1 - s[3]);
+      over(img.pixel(x, y), comp.paint_premultiplied(s), 1.0f);
     }
   }
 }

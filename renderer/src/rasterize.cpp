@@ -1,6 +1,6 @@
 // rasterize(): items become exact geometry (prepare.hpp), then the canvas is processed in
 // horizontal bands of rows, each band by one thread, every item composited in order with
-// Porter-Duff over. A band's pixels depend only on the geometry and its own rows, never on
+// Porter-Duff over (compositor.hpp). A band's pixels depend only on the geometry and its own rows, never on
 // which thread ran it or on the other bands, so any thread count gives identical bytes.
 #include "box_coverage.hpp"
 #include "filter_coverage.hpp"
@@ -19,14 +19,6 @@ namespace detail {
 namespace {
 
 constexpr int kBandRows = 16;
-
-inline void over(float* px, const float* col, float c) {
-  const float k = 1.0f - col[3] * c;
-  px[0] = col[0] * c + px[0] * k;
-  px[1] = col[1] * c + px[1] * k;
-  px[2] = col[2] * c + px[2] * k;
-  px[3] = col[3] * c + px[3] * k;
-}
 
 // The item's rows in [r0, r1), one band of kBandRows rows at a time: the band is one strip of
 // the scan converter (its union resolved once for all its rows), then each row is summed and
@@ -60,7 +52,7 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
         cov += row.acc[static_cast<std::size_t>(x)];
         row.acc[static_cast<std::size_t>(x)] = 0;
         const double c = cov;
-        if (c > 1e-9) over(px + 4 * static_cast<std::size_t>(x), p.color, static_cast<float>(std::min(c, 1.0)));
+        if (c > 1e-9) over(px + 4 * static_cast<std::size_t>(x), p.paint, static_cast<float>(std::min(c, 1.0)));
       }
       for (int x = xe + 1; x <= std::min(row.cmax + 1, img.width + 1); ++x) row.acc[static_cast<std::size_t>(x)] = 0;
     }
@@ -74,20 +66,17 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
 Image rasterize(const Scene& scene, int threads) {
   using namespace detail;
   const int W = scene.width(), H = scene.height();
+  const Compositor comp(scene.blend_);
   Image img(0, 0, 4);  // RGBA; the pixels get huge-page advice before they are first written
   img.width = W;
   img.height = H;
+  img.encoding = comp.encoding();
   reserve_huge(img.pixels, static_cast<std::size_t>(W) * H * 4);
   img.pixels.resize(static_cast<std::size_t>(W) * H * 4);
-  const Color bg = scene.background_;
+  const Paint bg = comp.paint(scene.background_);
   auto clear_rows = [&](int r0, int r1) {  // to the background
     const std::size_t end = static_cast<std::size_t>(r1) * W * 4;
-    for (std::size_t i = static_cast<std::size_t>(r0) * W * 4; i < end; i += 4) {
-      img.pixels[i] = bg.r * bg.a;
-      img.pixels[i + 1] = bg.g * bg.a;
-      img.pixels[i + 2] = bg.b * bg.a;
-      img.pixels[i + 3] = bg.a;
-    }
+    for (std::size_t i = static_cast<std::size_t>(r0) * W * 4; i < end; i += 4) std::copy_n(bg.v, 4, &img.pixels[i]);
   };
 
   const bool box = exact_area(scene.filter_);
@@ -98,7 +87,7 @@ Image rasterize(const Scene& scene, int threads) {
   Geometry geom;
   const auto& items = scene.items();
   auto prepare = [&](std::size_t i, Prepared& p, Geometry& into, int item_threads) {
-    prepare_item(items[i], shift, clip, into, p, W, H, item_threads);
+    prepare_item(items[i], comp, shift, clip, into, p, H, item_threads);
     if (p.raster || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));
@@ -128,7 +117,7 @@ Image rasterize(const Scene& scene, int threads) {
       prepare(i, p, geom, 1);
       if (p.row1 <= p.row0) continue;
       if (p.raster) {
-        composite_raster(*p.raster, img, 0, H);
+        composite_raster(*p.raster, comp, img, 0, H);
       } else if (box) {
         render_box(geom, p, img, p.row0, p.row1, band, sweep);
       } else {
@@ -186,7 +175,7 @@ Image rasterize(const Scene& scene, int threads) {
     for (std::uint32_t i : band_items[b]) {
       const Prepared& p = prep[i];
       const Geometry& g = geoms[run_of[i]];
-      if (p.raster) composite_raster(*p.raster, img, r0, r1);
+      if (p.raster) composite_raster(*p.raster, comp, img, r0, r1);
       else if (box) render_box(g, p, img, r0, r1, s->band, s->sweep);
       else render_filtered(g, p, grid, img, r0, r1, s->fs, s->sweep);
     }

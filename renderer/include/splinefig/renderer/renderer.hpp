@@ -29,6 +29,13 @@ struct Color {  // linear light, straight alpha
 // "#rrggbb" or "#rrggbbaa" (sRGB) -> linear; nullopt if it is not such a string.
 std::optional<Color> parse_hex_color(std::string_view hex);
 
+// The values Porter-Duff over is computed in (compositor.hpp). Linear light is physically right
+// and the default; sRGB blends the encoded values, as AGG, browsers and most 2-D libraries do, so
+// that a PNG matches what they draw. rasterize() returns the canvas in its blend space's encoding
+// (Image::encoding: linear, or srgb with associated alpha); to_linear() (image/srgb.hpp) gives the
+// linear form.
+enum class BlendSpace { linear, srgb };
+
 enum class Join { Miter, Round, Bevel };
 enum class Cap { Butt, Round, Square };
 enum class FillRule { NonZero, EvenOdd };
@@ -117,6 +124,8 @@ class Scene {
   int height() const { return height_; }
   Color background() const { return background_; }
   const Kernel& filter() const { return filter_; }
+  BlendSpace blend_space() const { return blend_; }
+  void set_blend_space(BlendSpace space) { blend_ = space; }
 
   // Every recorded item, in drawing order, as the call that recorded it (for writers of
   // other formats: vector/).
@@ -133,6 +142,7 @@ class Scene {
   int width_, height_;
   Color background_;
   Kernel filter_;
+  BlendSpace blend_ = BlendSpace::linear;
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
 };
@@ -154,7 +164,8 @@ class SceneVisitor {
   virtual void image(const Image& image, Vec2 p0, Vec2 p1, Scene::Sampling sampling) = 0;
 };
 
-// The picture as a linear-light RGBA image (associated alpha, channels R, G, B, A).
+// The picture as an RGBA image (associated alpha, channels R, G, B, A) in the scene's blend
+// space: linear light by default (Encoding::linear), sRGB-encoded for BlendSpace::srgb.
 // threads <= 0: all hardware threads.
 Image rasterize(const Scene& scene, int threads = 0);
 
