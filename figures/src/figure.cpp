@@ -4,8 +4,6 @@
 #include "plot.hpp"
 #include "rich_text.hpp"
 
-#include <splinefig/spline/kernel.hpp>
-
 #include <cmath>
 
 namespace splinefig::figures {
@@ -143,7 +141,7 @@ FigureScene figure_scene(const FigureSpec& spec, double scale) {
   check_scaled_canvas(spec, scale, spec.path);
   Painter p(scale, spec.font_family);
   FigureInfo info = build(spec, scale, p);
-  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, parse_kernel(spec.canvas.filter));
+  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter);
   return {std::move(scene), std::move(info)};
 }
 

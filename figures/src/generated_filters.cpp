@@ -5,7 +5,6 @@
 #include <splinefig/resample/prefilter.hpp>
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/kernel/analysis.hpp>
-#include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -41,9 +40,8 @@ std::vector<double> piece_offsets(const Kernel& k) {
   return o;
 }
 
-std::shared_ptr<const Kernel> filter_of(const std::string& spec) { return std::make_shared<const Kernel>(parse_kernel(spec)); }
-
-Edge edge_of(const std::string& name) { return parse_edge(name).value_or(Edge::clamp); }
+// The element's kernel, shared by the path's functions.
+std::shared_ptr<const Kernel> shared(const Kernel& k) { return std::make_shared<const Kernel>(k); }
 
 GeneratedSeries traced(Path path, const SeriesLook& look) { return {{{}, look}, std::move(path)}; }
 
@@ -51,7 +49,7 @@ GeneratedSeries traced(Path path, const SeriesLook& look) { return {{{}, look}, 
 
 // k(s) on [s0, s1]; at a jump (the box) both one-sided values, so it is drawn upright.
 std::vector<GeneratedPart> parts_of(const FilterCurveElement& e) {
-  auto f = filter_of(e.filter);
+  auto f = shared(e.filter);
   const double s0 = e.range ? (*e.range)[0] : f->support().lo, s1 = e.range ? (*e.range)[1] : f->support().hi;
   Path p;
   p.breaks = breaks_over(s0, s1, piece_offsets(*f));
@@ -63,7 +61,7 @@ std::vector<GeneratedPart> parts_of(const FilterCurveElement& e) {
 // |K(f)|: smooth but for kinks where K changes sign; breaks every 1/8 cycle per sample seed
 // the subdivision.
 std::vector<GeneratedPart> parts_of(const ResponseElement& e) {
-  auto f = filter_of(e.filter);
+  auto f = shared(e.filter);
   Path p;
   p.breaks = breaks_over(e.range[0], e.range[1], {0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875});
   p.at = [f](double fr) { return Vec2{fr, response(*f, fr)}; };
@@ -73,9 +71,9 @@ std::vector<GeneratedPart> parts_of(const ResponseElement& e) {
 // X(t) = sum_j c_j k(t - j) / sum_j k(t - j) for samples at t = 0 .. n-1, extended beyond them
 // by the edge mode; c = the samples, or their inverse prefilter.
 std::vector<GeneratedPart> parts_of(const StepElement& e) {
-  auto f = filter_of(e.filter);
+  auto f = shared(e.filter);
   const long n = static_cast<long>(e.values.size());
-  const Edge edge = edge_of(e.edge);
+  const Edge edge = e.edge;
   auto c = std::make_shared<std::vector<float>>(e.values.begin(), e.values.end());
   if (e.interpolating) {
     try {
@@ -106,10 +104,10 @@ std::vector<GeneratedPart> parts_of(const StepElement& e) {
 // image centre, in pixels): its local frequency r/N reaches Nyquist at the edges' midpoints and
 // passes it towards the corners. Resampled to `size` with the filter and cropped.
 std::vector<GeneratedPart> parts_of(const ZoneplateElement& e) {
-  const Kernel f = parse_kernel(e.filter);
+  const Kernel& f = e.filter;
   const int n = e.source;
   ResampleOptions opt;
-  opt.edge = edge_of(e.edge);
+  opt.edge = e.edge;
   opt.interpolating = e.interpolating;
   // The plate is symmetric under x -> n-1-x, y -> n-1-y and x <-> y, and d(n-1-x)^2 = d(x)^2
   // exactly (d is a half-integer), so one octant is computed and mirrored: every pixel gets the

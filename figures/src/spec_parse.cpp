@@ -25,6 +25,16 @@ Basis checked_basis(TableReader& r, std::string_view key, const std::string& spe
   }
 }
 
+Kernel kernel_value(TableReader& r, std::string_view key, const std::string& spec) {
+  try {
+    return parse_kernel(spec);
+  } catch (const SpecError& e) {
+    r.fail(key, e.what());
+  } catch (const std::invalid_argument& e) {
+    r.fail(key, e.what());
+  }
+}
+
 Labelling parse_labelling(TableReader& r) {
   Labelling l;
   l.label = r.label("label", "");
@@ -86,14 +96,15 @@ Canvas parse_canvas(TableReader& r) {
   c.height = r.integer("height", c.height, 1, 1 << 30);
   check_canvas(r, c);
   c.background = r.color("background", c.background);
-  c.filter = r.string("filter", c.filter);
-  if (c.filter != "box" && c.filter != "tent") checked_basis(r, "filter", c.filter);
-  // The kernel the renderer will be given, checked as it checks a pixel filter, so that a
-  // filter it refuses is an error here, with the spec's file, line and key.
-  try {
-    render::validate_pixel_filter(parse_kernel(c.filter));
-  } catch (const std::exception& e) {
-    r.fail("filter", e.what());
+  if (auto spec = r.opt_string("filter")) {
+    c.filter = kernel_value(r, "filter", *spec);
+    // Checked as the renderer checks a pixel filter, so that a filter it refuses is an error
+    // here, with the spec's file, line and key.
+    try {
+      render::validate_pixel_filter(c.filter);
+    } catch (const std::invalid_argument& e) {
+      r.fail("filter", e.what());
+    }
   }
   r.finish();
   return c;

@@ -13,6 +13,8 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx);
 Raster parse_raster(TableReader& r, const ParseContext& ctx);
 // Checks a basis spec with the spline core; returns the basis or fails naming `key`.
 Basis checked_basis(TableReader& r, std::string_view key, const std::string& spec);
+// The kernel of a filter spec (a basis spec, box, tent or lanczos3), or fails naming `key`.
+Kernel kernel_value(TableReader& r, std::string_view key, const std::string& spec);
 Labelling parse_labelling(TableReader& r);
 render::Marker parse_marker_shape(TableReader& r, std::string_view key, render::Marker fallback);
 

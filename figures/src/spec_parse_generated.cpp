@@ -25,21 +25,17 @@ std::optional<std::array<double, 2>> opt_range(TableReader& r, const char* expec
   return std::array<double, 2>{v[0], v[1]};
 }
 
-std::string filter_key(TableReader& r) {
+Kernel filter_key(TableReader& r) {
   auto spec = r.opt_string("filter");
   if (!spec) r.fail("filter", "needs filter = \"SPEC\" (a basis spec, box, tent or lanczos3)");
-  try {
-    parse_kernel(*spec);
-  } catch (const SpecError& e) {
-    r.fail("filter", e.what());
-  }
-  return *spec;
+  return kernel_value(r, "filter", *spec);
 }
 
-std::string edge_key(TableReader& r, const char* fallback) {
+Edge edge_key(TableReader& r, const char* fallback) {
   const std::string name = r.string("edge", fallback);
-  if (!parse_edge(name)) r.fail("edge", "'" + name + "' is not one of clamp, mirror, wrap, black");
-  return name;
+  const auto edge = parse_edge(name);
+  if (!edge) r.fail("edge", "'" + name + "' is not one of clamp, mirror, wrap, black");
+  return *edge;
 }
 
 InterpElement parse_interp(TableReader& r) {

@@ -38,7 +38,11 @@ TEST_CASE("bad specs name the file, the line and the key") {
       {std::string(kAxes) + "[[axes.curve]]\nknots = [[0, 0], [1, 1]]\n", "bad.toml:8: axes.curve[0].knots: 2 knots are too few"},
       {std::string(kAxes) + "[[axes.curve]]\nknots = [[0, 0], [1, 1], [2, 0], [3, 1]]\nwidht = 2\n",
        "bad.toml:9: axes.curve[0].widht: unknown key"},
-      {"[canvas]\nfilter = \"gauss\"\n", "bad.toml:2: canvas.filter: basis \"gauss\""},
+      {"[canvas]\nfilter = \"gauss\"\n", "bad.toml:2: canvas.filter: unknown filter 'gauss' (known: box, tent, lanczos3"},
+      // A filter the renderer refuses as a pixel filter is refused at load, with the key.
+      {"[canvas]\nfilter = \"uniform-bspline:degree=12\"\n",
+       "bad.toml:2: canvas.filter: pixel filter 'uniform-bspline:degree=12': support wider than 8 px"},
+      {"[canvas]\nwidth = 10\nfilter = \"lanczos3\"\n", "bad.toml:3: canvas.filter: pixel filter 'lanczos3': not a piecewise polynomial"},
       {"[[text]]\nat = [1, 2]\ntext = \"c_{3\"\n", "bad.toml:3: text[0].text"},
       {"[canvas]\nwidth = 10\n[canvas\n", "bad.toml:3"},
       {"[layout]\nrows = 1\ncols = 1\n[[axes]]\ncell = [1, 0]\n", "bad.toml:4: axes.cell: [1, 0] is outside the 1x1 layout"},
@@ -61,6 +65,28 @@ TEST_CASE("good specs parse, keep document order and take the house defaults") {
   CHECK(spec.canvas.width == 800);
   CHECK(spec.canvas.height == 500);
   CHECK(spec.name == "good");
+}
+
+TEST_CASE("filter and edge names are read as their values at load") {
+  using namespace splinefig::figures;
+  auto spec = parse_spec(std::string("[canvas]\nwidth = 100\nheight = 80\nfilter = \"tent\"\n[axes]\nx_range = [0, 1]\n"
+                                     "y_range = [0, 1]\n[[axes.step]]\nfilter = \"bspline\"\nedge = \"wrap\"\n"
+                                     "[[axes.zoneplate]]\nfilter = \"box\"\nsource = 8\n"),
+                         "good.toml");
+  // The tent 1 - |s| on [-1, 1]: 1/2 at s = 1/2.
+  CHECK(spec.canvas.filter.support().lo == -1);
+  CHECK(spec.canvas.filter.support().hi == 1);
+  CHECK(spec.canvas.filter(0.5) == Approx(0.5));
+  CHECK(parse_spec("[canvas]\nwidth = 10\n", "good.toml").canvas.filter(0.25) == 1);  // the box
+  const auto& ax = std::get<AxesSpec>(spec.items.at(0));
+  REQUIRE(ax.elements.size() == 2);
+  const auto& step = std::get<StepElement>(ax.elements[0]);
+  CHECK(step.edge == splinefig::Edge::wrap);
+  // The cubic B-spline (4 - 6 s^2 + 3 |s|^3) / 6: 2/3 at 0, 1/6 at 1, support [-2, 2].
+  CHECK(step.filter(0) == Approx(2.0 / 3));
+  CHECK(step.filter(1) == Approx(1.0 / 6));
+  CHECK(step.filter.support().hi == 2);
+  CHECK(std::get<ZoneplateElement>(ax.elements[1]).edge == splinefig::Edge::mirror);  // its default
 }
 
 TEST_CASE("splinefig render: a bad spec fails with one line and writes nothing") {

@@ -7,6 +7,7 @@
 // data series, control polygons, fills, labels, annotations). Everything here is plain
 // data; load_spec() checks every value so that drawing can assume valid input.
 #include <splinefig/renderer/renderer.hpp>
+#include <splinefig/resample/resample.hpp>
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/curve.hpp>
 
@@ -41,7 +42,9 @@ inline constexpr std::size_t kMaxBezierPoints = 128;  // control points of one [
 struct Canvas {
   int width = 800, height = 500;
   Color background{1, 1, 1, 1};
-  std::string filter = "box";  // "box", "tent" or a basis spec
+  // The pixel filter: box, tent or a basis spec, read as the kernel and checked as the renderer
+  // checks one (render::validate_pixel_filter).
+  Kernel filter = Kernel::box();
 };
 
 // A stroke's look: width in pixels at 1x, colour, joins, caps and dashes.
@@ -302,23 +305,23 @@ struct InbetweenElement {  // [[axes.inbetween]]: a frame between keyframes
 
 struct FilterCurveElement {  // [[axes.filter]]: k(s) of a filter spec
   std::string where;
-  std::string filter;  // checked by the loader
+  Kernel filter;  // a basis spec, box, tent or lanczos3, read as the kernel
   std::optional<std::array<double, 2>> range;  // default: the support
   SeriesLook look;
 };
 
 struct ResponseElement {  // [[axes.response]]: |K(f)|, f in cycles per sample
   std::string where;
-  std::string filter;
+  Kernel filter;
   std::array<double, 2> range{0, 2};
   SeriesLook look;
 };
 
 struct StepElement {  // [[axes.step]]: a filter's reconstruction of samples
   std::string where;
-  std::string filter;
+  Kernel filter;
   std::vector<double> values{0, 0, 0, 0, 1, 1, 1, 1};
-  std::string edge = "clamp";  // checked by the loader
+  Edge edge = Edge::clamp;
   bool interpolating = false;
   std::optional<std::array<double, 2>> range;  // default: [-1/2, n - 1/2]
   SeriesLook look;
@@ -327,9 +330,9 @@ struct StepElement {  // [[axes.step]]: a filter's reconstruction of samples
 
 struct ZoneplateElement {  // [[axes.zoneplate]]: a zone plate resampled, as an image
   std::string where;
-  std::string filter;
+  Kernel filter;
   int source = 64, size = 512;
-  std::string edge = "mirror";
+  Edge edge = Edge::mirror;
   bool interpolating = false;
   std::array<int, 4> crop{0, 0, 512, 512};  // x, y, width, height in output pixels
   std::array<double, 4> extent{};
