@@ -144,7 +144,7 @@ std::vector<Vec2> scaled(const std::vector<Vec2>& pts, double s) {
 
 render::StrokeStyle scaled(render::StrokeStyle st, double s) {
   st.width *= s;
-  for (double& d : st.dashes) d *= s;
+  st.dashes = st.dashes.scaled(s);
   st.dash_offset *= s;
   return st;
 }

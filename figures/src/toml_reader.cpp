@@ -154,8 +154,13 @@ std::string utf8_problem(std::string_view text, const std::string& file) {
         for (;;) {
           const std::size_t dot = name.find('.', start);
           const std::string prefix = name.substr(0, dot);
-          table += (table.empty() ? "" : ".") + name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-          if (auto it = arrays.find(prefix); it != arrays.end()) table += "[" + std::to_string(it->second) + "]";
+          if (!table.empty()) table += '.';
+          table.append(name, start, dot == std::string::npos ? std::string::npos : dot - start);
+          if (auto it = arrays.find(prefix); it != arrays.end()) {
+            table += '[';
+            table += std::to_string(it->second);
+            table += ']';
+          }
           if (dot == std::string::npos) break;
           start = dot + 1;
         }
@@ -451,16 +456,10 @@ render::StrokeStyle TableReader::stroke(render::StrokeStyle s) {
   if (s.miter_limit < 1) fail("miter_limit", "must be >= 1");
   s.cap = static_cast<render::Cap>(choice("cap", {"butt", "round", "square"}, static_cast<int>(s.cap)));
   if (has("dash")) {
-    s.dashes = numbers("dash");
-    double total = 0;
-    for (double d : s.dashes) {
-      if (d < 0) fail("dash", "dash lengths must not be negative");
-      total += d;
-    }
-    if (!s.dashes.empty() && !(total >= 0.001)) fail("dash", "the dash pattern must be at least 0.001 px long");
-    if (s.dashes.size() % 2) {  // SVG: an odd list repeats to make it even
-      auto copy = s.dashes;
-      s.dashes.insert(s.dashes.end(), copy.begin(), copy.end());
+    try {
+      s.dashes = render::DashPattern(numbers("dash"));
+    } catch (const std::invalid_argument& e) {
+      fail("dash", e.what());
     }
   }
   s.dash_offset = number("dash_offset", s.dash_offset);

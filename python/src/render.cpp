@@ -43,7 +43,7 @@ render::StrokeStyle stroke_of(double width, const std::string& join, const std::
   s.join = pick<render::Join>(join, "join", {{"miter", render::Join::Miter}, {"round", render::Join::Round}, {"bevel", render::Join::Bevel}});
   s.cap = pick<render::Cap>(cap, "cap", {{"butt", render::Cap::Butt}, {"round", render::Cap::Round}, {"square", render::Cap::Square}});
   s.miter_limit = miter_limit;
-  s.dashes = std::move(dashes);
+  s.dashes = render::DashPattern(std::move(dashes));
   s.dash_offset = dash_offset;
   return s;
 }

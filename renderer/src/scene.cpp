@@ -23,10 +23,6 @@ void add(std::vector<Scene::Item>& items, Scene::Item&& it) {
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
 
-// Beyond 1e15 px a double cannot place a point within a pixel, and differences of such
-// values may overflow: lengths and positions are limited to that range.
-constexpr double kMaxCoordinate = 1e15;
-
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
@@ -65,18 +61,33 @@ void check_style(const StrokeStyle& s, const char* call) {
   if (s.width < 0) bad(std::string(call) + ": stroke width " + num(s.width) + " is negative");
   check_finite(s.miter_limit, call, "miter limit");
   if (s.miter_limit < 1) bad(std::string(call) + ": miter limit " + std::to_string(s.miter_limit) + " is below 1");
-  check_finite(s.dash_offset, call, "dash offset");
-  double period = 0;
-  for (double d : s.dashes) {
-    check_finite(d, call, "dash length");
-    if (d < 0) bad(std::string(call) + ": dash length " + std::to_string(d) + " is negative");
-    period += d;
-  }
-  if (!s.dashes.empty() && period > 0 && period < 1e-3)
-    bad(std::string(call) + ": dash pattern period " + std::to_string(period) + " px is below 0.001 px");
+  check_finite(s.dash_offset, call, "dash offset");  // the pattern itself is valid by construction
 }
 
 }  // namespace
+
+DashPattern::DashPattern(std::vector<double> lengths) : lengths_(std::move(lengths)) {
+  if (lengths_.empty()) return;
+  for (double d : lengths_) {
+    if (!std::isfinite(d)) bad("dash length " + num(d) + " is not finite");
+    if (d < 0) bad("dash length " + num(d) + " is negative");
+    if (d > kMaxCoordinate) bad("dash length " + num(d) + " exceeds " + num(kMaxCoordinate) + " px");
+    period_ += d;
+  }
+  if (!(period_ >= kMinDashPeriod))
+    bad("dash pattern period " + num(period_) + " px is below " + num(kMinDashPeriod) + " px");
+  if (lengths_.size() % 2) {  // SVG: an odd list repeats to make it even
+    lengths_.reserve(2 * lengths_.size());
+    lengths_.insert(lengths_.end(), lengths_.begin(), lengths_.end());
+    period_ *= 2;
+  }
+}
+
+DashPattern DashPattern::scaled(double s) const {
+  std::vector<double> v(lengths_);
+  for (double& d : v) d *= s;
+  return DashPattern(std::move(v));
+}
 
 void validate_pixel_filter(const Kernel& k) {
   if (!k.polynomial()) bad("pixel filter '" + k.name() + "': not a piecewise polynomial");
@@ -89,8 +100,10 @@ Scene::Scene(int width, int height, Color background, Kernel filter)
     : width_(width), height_(height), background_(background), filter_(std::move(filter)),
       items_(std::make_unique<std::vector<Item>>()) {
   if (width < 1 || height < 1) bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is empty");
-  if (width > 32768 || height > 32768) bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds 32768 px a side");
-  if (static_cast<long long>(width) * height > (1LL << 28))
+  if (width > kMaxCanvasSide || height > kMaxCanvasSide)
+    bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds " + std::to_string(kMaxCanvasSide) +
+        " px a side");
+  if (static_cast<long long>(width) * height > kMaxCanvasPixels)
     bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds 2^28 pixels");
   check_color(background, "Scene");
   validate_pixel_filter(filter_);
@@ -111,7 +124,7 @@ void Scene::stroke_polyline(std::vector<Vec2>&& points, bool closed, const Strok
   check_style(style, "stroke_polyline");
   check_color(color, "stroke_polyline");
   const double work = detail::visible_dash_work(points, closed, style, {0, 0, double(width_), double(height_)});
-  if (work > detail::kMaxDashWork) {
+  if (work > kMaxDashWork) {
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "stroke_polyline: the dash pattern is too fine for its length and width on this canvas "

@@ -243,9 +243,7 @@ void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& s
 }
 
 OutlinePieces::OutlinePieces(std::span<const Vec2> pts, bool closed, const StrokeStyle& style) : style_(style) {
-  double period = 0;
-  for (double d : style.dashes) period += d;
-  if (closed || !(style.width > 0) || period > 0) return;
+  if (closed || !(style.width > 0) || !style.dashes.empty()) return;
   cut(pts);
 }
 
@@ -303,9 +301,7 @@ void clip_segment(Vec2 a, Vec2 d, double len, const Box& box, double& t0, double
 
 double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip) {
   if (!(style.width > 0) || pts.size() < 2 || style.dashes.empty()) return 0;
-  double period = 0;
-  for (double d : style.dashes) period += d;
-  if (!(period > 0)) return 0;
+  const double period = style.dashes.period();
   const double per_period = static_cast<double>((style.dashes.size() + 1) / 2);
   const Box near = inflated(clip, stroke_reach(style));
   double count = 0;
@@ -327,17 +323,12 @@ double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeSty
 
 void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {
   if (!(style.width > 0) || pts.empty()) return;
-  std::vector<double> dash = style.dashes;
-  double period = 0;
-  for (double d : dash) period += d;
-  if (dash.empty() || !(period > 0)) {
+  const DashPattern& dash = style.dashes;  // even, with a positive period (renderer.hpp)
+  if (dash.empty()) {
     stroke_outline(pts, closed, style, out);
     return;
   }
-  if (dash.size() % 2) {
-    dash.insert(dash.end(), dash.begin(), dash.end());
-    period *= 2;
-  }
+  const double period = dash.period();
   std::vector<Vec2> p(pts.begin(), pts.end());
   if (closed && !p.empty()) p.push_back(p.front());
 
@@ -363,7 +354,7 @@ void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& styl
   };
 
   StrokeStyle solid = style;
-  solid.dashes.clear();
+  solid.dashes = {};
   std::vector<Vec2> run;
   Vec2 run_dir{1, 0};
   auto flush = [&]() {

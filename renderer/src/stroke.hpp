@@ -37,9 +37,8 @@ void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& styl
 // The work of the dashes stroke_path generates for `pts` near `clip`, computed without
 // generating them: the number of dashes (at most; segment ends count as one each) times the
 // square of 1 + width / period, the number of dashes each one's outline overlaps.
+// Scene::stroke_polyline refuses more than kMaxDashWork (base/limits.hpp): a few seconds.
 double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip);
-// The most dash work one stroke may take (Scene::stroke_polyline refuses more): a few seconds.
-inline constexpr double kMaxDashWork = 1 << 20;
 
 // The stroke of a path with no dashes.
 void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out);

@@ -28,7 +28,7 @@ RenderedFigure bias_curve_alone(const std::string& basis) {
     for (auto& e : ax->elements)
       if (auto* c = std::get_if<CurveElement>(&e); c && c->basis_spec == basis) {
         c->color = Color{0, 0, 0, 1};
-        c->stroke.dashes.clear();
+        c->stroke.dashes = {};
         kept.push_back(*c);
       }
     REQUIRE(kept.size() == 1);

@@ -118,10 +118,20 @@ TEST_CASE("NaN and infinite input is rejected with std::invalid_argument naming 
   st.width = -2;
   REQUIRE_THROWS_WITH(s.stroke_circle({1, 1}, 3, st, {}), Catch::Contains("negative"));
   st.width = 1;
-  st.dashes = {1, NAN};
-  REQUIRE_THROWS_WITH(s.stroke_polyline(std::vector<sr::Vec2>{{0, 0}, {1, 1}}, false, st, {}), Catch::Contains("dash"));
-  st.dashes = {1e-6, 1e-6};
-  REQUIRE_THROWS_WITH(s.stroke_polyline(std::vector<sr::Vec2>{{0, 0}, {1, 1}}, false, st, {}), Catch::Contains("period"));
+  // A dash pattern is checked where it is made: one that exists is valid.
+  REQUIRE_THROWS_WITH(sr::DashPattern({1, NAN}), "dash length nan is not finite");
+  REQUIRE_THROWS_WITH(sr::DashPattern({1, -2}), "dash length -2 is negative");
+  REQUIRE_THROWS_WITH(sr::DashPattern({1e-6, 1e-6}), "dash pattern period 2e-06 px is below 0.001 px");
+  REQUIRE_THROWS_WITH(sr::DashPattern({0, 0}), Catch::Contains("period 0 px"));
+  REQUIRE_THROWS_WITH(sr::DashPattern({1, 2e15}), Catch::Contains("exceeds 1e+15"));
+  // An odd list repeats to an even one (SVG), its period doubling: 3 on, 1 off, 2 on, 3 off, 1 on, 2 off.
+  const sr::DashPattern odd{3, 1, 2};
+  CHECK(std::vector<double>(odd.begin(), odd.end()) == std::vector<double>{3, 1, 2, 3, 1, 2});
+  CHECK(odd.period() == 12);
+  CHECK(sr::DashPattern{}.empty());
+  CHECK(sr::DashPattern{}.period() == 0);
+  CHECK(odd.scaled(0.5).period() == 6);
+  REQUIRE_THROWS_WITH(odd.scaled(1e-5), Catch::Contains("below 0.001 px"));
   REQUIRE_THROWS_WITH(s.fill_circle({0, 0}, 1, {NAN, 0, 0, 1}), Catch::Contains("colour"));
   // magnitudes where doubles no longer resolve pixels (and differences overflow)
   REQUIRE_THROWS_WITH(s.fill_polygon({{{-1e300, 0}, {1e300, 0}, {0, 1}}}, sr::FillRule::NonZero, {}), Catch::Contains("1e15"));

@@ -125,9 +125,7 @@ class PdfWriter final : public render::SceneVisitor {
     cairo_set_line_cap(cr_, st.cap == render::Cap::Round    ? CAIRO_LINE_CAP_ROUND
                             : st.cap == render::Cap::Square ? CAIRO_LINE_CAP_SQUARE
                                                             : CAIRO_LINE_CAP_BUTT);
-    double period = 0;
-    for (double d : st.dashes) period += d;
-    if (!st.dashes.empty() && period > 0)
+    if (!st.dashes.empty())
       cairo_set_dash(cr_, st.dashes.data(), static_cast<int>(st.dashes.size()), st.dash_offset);
     else
       cairo_set_dash(cr_, nullptr, 0, 0);

@@ -186,9 +186,7 @@ class SvgWriter final : public render::SceneVisitor {
     }
     if (st.cap == render::Cap::Round) out += " stroke-linecap=\"round\"";
     if (st.cap == render::Cap::Square) out += " stroke-linecap=\"square\"";
-    double period = 0;
-    for (double d : st.dashes) period += d;
-    if (!st.dashes.empty() && period > 0) {
+    if (!st.dashes.empty()) {
       out += " stroke-dasharray=\"";
       for (std::size_t i = 0; i < st.dashes.size(); ++i) {
         if (i) out += ' ';

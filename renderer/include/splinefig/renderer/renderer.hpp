@@ -6,10 +6,12 @@
 // centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha at the API; the
 // image (splinefig::Image, image/image.hpp) holds premultiplied linear RGBA float32,
 // composited with Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
+#include <splinefig/base/limits.hpp>
 #include <splinefig/image/image.hpp>
 #include <splinefig/kernel/kernel.hpp>
 
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <span>
@@ -40,13 +42,39 @@ enum class Join { Miter, Round, Bevel };
 enum class Cap { Butt, Round, Square };
 enum class FillRule { NonZero, EvenOdd };
 
+// A dash pattern, checked and normalised once, where it is made: on/off lengths in pixels, each
+// finite, >= 0 and at most kMaxCoordinate, with a period (their sum) of at least kMinDashPeriod;
+// an odd list is repeated to an even one, as SVG does. Empty: a solid stroke. A bad list throws
+// std::invalid_argument naming the length or the period, so a pattern that exists is valid.
+class DashPattern {
+ public:
+  DashPattern() = default;
+  DashPattern(std::initializer_list<double> lengths) : DashPattern(std::vector<double>(lengths)) {}
+  explicit DashPattern(std::vector<double> lengths);
+
+  bool empty() const { return lengths_.empty(); }
+  std::size_t size() const { return lengths_.size(); }  // even
+  double operator[](std::size_t i) const { return lengths_[i]; }
+  const double* data() const { return lengths_.data(); }
+  std::vector<double>::const_iterator begin() const { return lengths_.begin(); }
+  std::vector<double>::const_iterator end() const { return lengths_.end(); }
+  double period() const { return period_; }  // 0 when empty
+  // Every length times s > 0 (the same pattern at another scale); throws as the constructor does.
+  DashPattern scaled(double s) const;
+  bool operator==(const DashPattern&) const = default;
+
+ private:
+  std::vector<double> lengths_;
+  double period_ = 0;
+};
+
 // Pieces as in SVG 2: a round join is the circular sector between the outer corners.
 struct StrokeStyle {
   double width = 1.0;
   Join join = Join::Miter;
   double miter_limit = 4.0;  // SVG semantics: miter length / width above this -> bevel
   Cap cap = Cap::Butt;
-  std::vector<double> dashes;  // on/off lengths in pixels; empty = solid
+  DashPattern dashes;  // empty = solid
   double dash_offset = 0.0;
 };
 
