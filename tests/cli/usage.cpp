@@ -246,7 +246,7 @@ TEST_CASE("progress: resample and diff --perceptual on large images show a line 
   // On a terminal (script(1) runs the command on a pseudo-terminal and records what it shows).
   auto on_terminal = [&](const std::vector<std::string>& args) {
     std::string cmd = shell_quote(SPLINEFIG_EXE);
-    for (const auto& a : args) cmd += " " + shell_quote(a);
+    for (const auto& a : args) cmd += ' ' + shell_quote(a);
     const fs::path typescript = dir / "typescript";
     const std::string line = "script -qec " + shell_quote(cmd + " >/dev/null") + " " + shell_quote(typescript.string()) +
                              " </dev/null >/dev/null 2>&1";

@@ -47,7 +47,7 @@ inline Outcome run_in(const fs::path& dir, const std::vector<std::string>& args,
   using test::shell_quote;
   std::string cmd = "cd " + shell_quote(dir.string()) + " && timeout -s KILL " + std::to_string(limit) + " " +
                     shell_quote(SPLINEFIG_EXE);
-  for (const auto& a : args) cmd += " " + shell_quote(a);
+  for (const auto& a : args) cmd += ' ' + shell_quote(a);
   cmd += " < " + shell_quote(stdin_path) + " > " + shell_quote((dir / ".out").string()) + " 2> " +
          shell_quote((dir / ".err").string());
   const auto t0 = std::chrono::steady_clock::now();

@@ -172,7 +172,7 @@ void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const 
       pool.emplace_back([&, t] {
         const Image im = noise(512, 512, unsigned(t));
         try {
-          for (int i = 0;; ++i) write_image((dir / ("w" + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
+          for (int i = 0;; ++i) write_image((dir / ('w' + std::to_string(t) + "-" + std::to_string(i % 3) + ".png")).string(), im);
         } catch (const UnwritableImage&) {
           // Once the handler runs, a write another thread starts is refused ("the process is
           // being stopped by a signal"); this thread then waits for the signal to end the process

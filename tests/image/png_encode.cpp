@@ -43,7 +43,7 @@ TEST_CASE("PNG holds the stored codes for 1 to 4 channels at 8 and 16 bits, deco
     for (int channels = 1; channels <= 4; ++channels) {
       INFO(bits << " bits, " << channels << " channels");
       const Image im = codes(channels, bits);
-      const std::string path = (dir / ("c" + std::to_string(channels) + "-" + std::to_string(bits) + ".png")).string();
+      const std::string path = (dir / ('c' + std::to_string(channels) + "-" + std::to_string(bits) + ".png")).string();
       WriteOptions w;
       w.bits = bits;
       write_image(path, im, w);

@@ -54,8 +54,8 @@ TEST_CASE("TIFF at 8 and 16 bits stores the values PNG stores") {
   const Image im = sample();
   for (int bits : {8, 16}) {
     INFO(bits << " bits");
-    const std::string png = (dir / ("x" + std::to_string(bits) + ".png")).string();
-    const std::string tif = (dir / ("x" + std::to_string(bits) + ".tif")).string();
+    const std::string png = (dir / ('x' + std::to_string(bits) + ".png")).string();
+    const std::string tif = (dir / ('x' + std::to_string(bits) + ".tif")).string();
     WriteOptions w;
     w.bits = bits;
     write_image(png, im, w);

@@ -14,7 +14,7 @@ using namespace splinefig;
 namespace {
 Points knots1(std::initializer_list<double> v) {
   Points p(1);
-  for (double x : v) p.push_back(std::array<double, 1>{x});
+  p.coords = v;
   return p;
 }
 Points knots2(std::initializer_list<std::array<double, 2>> v) {
