@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "splinefig/base/parallel.hpp"
@@ -259,6 +260,20 @@ Metrics exact_pass(const Layout& L, float fail, float warn) {
 
 }  // namespace
 
+bool inner_loop_available(InnerLoop loop) {
+  switch (loop) {
+    case InnerLoop::fastest:
+    case InnerLoop::portable: return true;
+#if defined(__SSE2__)
+    case InnerLoop::sse2: return true;
+#endif
+#if defined(SPLINEFIG_HAVE_AVX2_PATH)
+    case InnerLoop::avx2: return cpu_has_avx2_fma();
+#endif
+    default: return false;
+  }
+}
+
 Metrics idiff_metrics(const Image& a_in, const Image& b_in, float failthresh, float warnthresh,
                       const MetricOptions& options) {
   const Window w = union_window(window_of(a_in), window_of(b_in));
@@ -289,11 +304,14 @@ Metrics idiff_metrics(const Image& a_in, const Image& b_in, float failthresh, fl
   const std::size_t chunk = std::size_t(1) << 15;
   const std::size_t nchunks = (npix + chunk - 1) / chunk;
   std::vector<Partial> parts(nchunks);
-  const bool fast = nch == 4 && !L.mask && !L.err;
+  if (!inner_loop_available(options.loop))
+    throw std::invalid_argument("idiff_metrics: this build or CPU lacks the requested inner loop");
+  const bool fast = nch == 4 && !L.mask && !L.err && options.loop != InnerLoop::portable;
   auto run = [&](std::size_t i) {
     const std::size_t p0 = i * chunk, p1 = std::min(npix, p0 + chunk);
 #if defined(SPLINEFIG_HAVE_AVX2_PATH)
-    if (fast && cpu_has_avx2_fma()) return chunk_rgba_avx2(L, p0, p1, warnthresh, failthresh, parts[i]);
+    if (fast && options.loop != InnerLoop::sse2 && cpu_has_avx2_fma())
+      return chunk_rgba_avx2(L, p0, p1, warnthresh, failthresh, parts[i]);
 #endif
 #if defined(__SSE2__)
     if (fast) return chunk_rgba(L, p0, p1, warnthresh, failthresh, parts[i]);

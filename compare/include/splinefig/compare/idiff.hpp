@@ -52,11 +52,21 @@ enum class Verdict { match = 0, warning = 1, failure = 2 };
 //           a 1-channel image on the union window, nullptr for none.
 //   error : a tolerated error per value (e.g. from shift_tolerant_error) used instead of |a-b|
 //           for finite pairs; an image on the union window with the union channel count.
+//   loop  : which inner loop computes RGBA images without mask or tolerated error (every other
+//           input takes the portable loop). `fastest` is AVX2 + FMA when the CPU has them, else
+//           SSE2; the others force one loop, so that tests can check each on any machine. The
+//           numbers are the same whichever runs.
+enum class InnerLoop { fastest, avx2, sse2, portable };
+
 struct MetricOptions {
   const Image* mask = nullptr;
   const Image* error = nullptr;
   int threads = 0;  // 0: hardware concurrency. The result does not depend on it.
+  InnerLoop loop = InnerLoop::fastest;
 };
+
+// Whether this build and CPU have `loop`; idiff_metrics throws std::invalid_argument for one they lack.
+bool inner_loop_available(InnerLoop loop);
 
 Metrics idiff_metrics(const Image& a, const Image& b, float failthresh, float warnthresh,
                       const MetricOptions& options = {});
