@@ -1,6 +1,7 @@
 // A whole figure: title, pixel-space items and axes panels in document order.
 #include <splinefig/figures/figure.hpp>
 
+#include "caption_fields.hpp"
 #include "plot.hpp"
 #include "rich_text.hpp"
 
@@ -90,7 +91,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   FigureInfo info;
   info.name = spec.name;
   info.title = plain_text(spec.title);  // index.json and the gallery show it as plain text
-  info.caption = spec.caption;
+  info.caption = caption_text(spec);  // its {=name} fields computed from the elements' data
   info.width = static_cast<int>(std::round(spec.canvas.width * scale));
   info.height = static_cast<int>(std::round(spec.canvas.height * scale));
   const Guides g;

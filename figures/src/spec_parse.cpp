@@ -1,6 +1,7 @@
 // The figure spec loader: canvas, layout and pixel-space primitives (axes: spec_parse_axes.cpp).
 // Items keep the document order (by source line), so later items draw over earlier ones.
 #include "spec_parse.hpp"
+#include "caption_fields.hpp"
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/renderer/renderer.hpp>
@@ -293,6 +294,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   spec.path = name;
   spec.title = r.label("title", "");
   spec.caption = r.string("caption", "");
+  spec.caption_fields = parse_caption_fields(r, spec.caption, r.origin("caption"));
   spec.show_title = r.boolean("show_title", true);
   spec.title_size = r.positive("title_size", spec.title_size);
   spec.font_family = r.font_family("font_family", spec.font_family);
@@ -325,6 +327,7 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   }
 
   place_panels(spec);
+  caption_text(spec);  // every caption field names an element it applies to
   return spec;
 }
 

@@ -392,11 +392,23 @@ struct Layout {
   double spacing = 24;  // between panels
 };
 
+// A computed field of the caption, `{=name}` in its text (caption_fields.cpp, docs/spec.md): a
+// value of one plot element's data, worked out when the figure is built.
+struct CaptionField {
+  std::string name;     // as written in the caption
+  std::string element;  // the element's key path, "axes[1].bezier[0]"
+  std::string function; // point, x, y, d1, d2, curvature, max_y, ..., knot, count, b1, b2
+  std::vector<double> args;
+  int decimals = 2;
+  std::string origin;   // "FILE:LINE: caption_field[i]", for messages
+};
+
 struct FigureSpec {
   std::string name;     // file stem
   std::string path;     // where it was read from
   std::string title;    // drawn at the top unless show_title = false; also in index/gallery
-  std::string caption;  // gallery and index only
+  std::string caption;  // gallery and index only; {=name} fields filled in when built
+  std::vector<CaptionField> caption_fields;
   bool show_title = true;
   double title_size = 18;
   render::FontFamily font_family = render::FontFamily::Sans;  // of every text without its own

@@ -1,0 +1,321 @@
+// The caption's computed fields (caption_fields.hpp, docs/spec.md "Caption fields").
+#include "caption_fields.hpp"
+
+#include "generated.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <optional>
+#include <set>
+
+namespace splinefig::figures::detail {
+namespace {
+
+// The value functions and how many arguments each takes.
+const std::map<std::string, int, std::less<>>& functions() {
+  static const std::map<std::string, int, std::less<>> f{
+      {"point", 1},    {"x", 1},        {"y", 1},        {"d1", 1},       {"d2", 1},   {"curvature", 1},
+      {"max_y", 2},    {"min_y", 2},    {"argmax_y", 2}, {"argmin_y", 2}, {"knot", 1}, {"count", 0},
+      {"b1", 1},       {"b2", 1}};
+  return f;
+}
+
+bool is_name(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+}
+
+std::string trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return std::string(s);
+}
+
+// "fn(a, b)" into the field; an empty string if it is fine, else what is wrong.
+std::string parse_value(const std::string& text, CaptionField& f) {
+  const auto open = text.find('('), close = text.rfind(')');
+  if (open == std::string::npos || close == std::string::npos || close < open || !trim(text.substr(close + 1)).empty())
+    return "\"" + text + "\": expected FUNCTION(ARGUMENTS), e.g. \"d2(0)\"";
+  f.function = trim(text.substr(0, open));
+  const auto fn = functions().find(f.function);
+  if (fn == functions().end())
+    return "\"" + f.function + "\" is not a value function (point, x, y, d1, d2, curvature, max_y, min_y, argmax_y, "
+           "argmin_y, knot, count, b1, b2)";
+  const std::string inner = trim(text.substr(open + 1, close - open - 1));
+  std::size_t at = 0;
+  while (!inner.empty() && at <= inner.size()) {
+    const auto comma = std::min(inner.find(',', at), inner.size());
+    const std::string arg = trim(inner.substr(at, comma - at));
+    char* end = nullptr;
+    const double v = std::strtod(arg.c_str(), &end);
+    if (arg.empty() || *end != '\0' || !std::isfinite(v)) return "\"" + arg + "\" is not a finite number";
+    f.args.push_back(v);
+    at = comma + 1;
+  }
+  if (static_cast<int>(f.args.size()) != fn->second)
+    return f.function + "() takes " + std::to_string(fn->second) + " argument" + (fn->second == 1 ? "" : "s") + ", got " +
+           std::to_string(f.args.size());
+  if (f.function == "knot" || f.function == "b1" || f.function == "b2")
+    if (f.args[0] < 0 || f.args[0] != std::floor(f.args[0]) || f.args[0] > 1e9)
+      return f.function + "() takes an index 0, 1, 2, ..., got " + caption_number(f.args[0], 6);
+  if (f.args.size() == 2 && !(f.args[0] < f.args[1])) return f.function + "(a, b) needs a < b";
+  return {};
+}
+
+// Each `{=name}` of the caption, in order, with where it starts and ends.
+struct Ref {
+  std::size_t begin, end;
+  std::string name;
+};
+std::vector<Ref> references(const std::string& caption, std::string& problem) {
+  std::vector<Ref> refs;
+  for (std::size_t p = caption.find("{="); p != std::string::npos; p = caption.find("{=", p + 2)) {
+    const auto close = caption.find('}', p);
+    const std::string name = close == std::string::npos ? "" : caption.substr(p + 2, close - p - 2);
+    if (!is_name(name)) {
+      problem = "a field is written {=NAME} (letters, digits, _), at \"" + caption.substr(p, 24) + "\"";
+      return {};
+    }
+    refs.push_back({p, close + 1, name});
+  }
+  return refs;
+}
+
+// ---- Values -----------------------------------------------------------------------------
+
+struct Value {
+  double v[2];
+  bool vector;
+};
+
+[[noreturn]] void fail(const CaptionField& f, const std::string& message) {
+  throw SpecFileError(f.origin + ": " + message);
+}
+
+// The element named by the field's key path and its axes.
+const PlotElement& find_element(const FigureSpec& spec, const CaptionField& f) {
+  const std::string suffix = ": " + f.element;
+  for (const auto& item : spec.items)
+    if (const auto* ax = std::get_if<AxesSpec>(&item))
+      for (std::size_t i = 0; i < ax->elements.size() && i < ax->element_origins.size(); ++i) {
+        const std::string& o = ax->element_origins[i];
+        if (o.size() >= suffix.size() && o.compare(o.size() - suffix.size(), suffix.size(), suffix) == 0)
+          return ax->elements[i];
+      }
+  fail(f, "element: \"" + f.element + "\" is no plot element of this spec (write its key path, e.g. axes.bezier[0] "
+          "or axes[1].bezier[0])");
+}
+
+// The input points of an element (`points` or `knots`), if it has them.
+const std::vector<Vec2>* input_points(const PlotElement& e) {
+  return std::visit(
+      [](const auto& x) -> const std::vector<Vec2>* {
+        if constexpr (requires { x.knots; }) return &x.knots;
+        else if constexpr (requires { x.points; }) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(x.points)>, std::vector<Vec2>>) return &x.points;
+          else return nullptr;
+        } else return nullptr;
+      },
+      e);
+}
+
+// The first traced path of a generated element.
+std::optional<Path> path_of(const std::vector<GeneratedPart>& parts) {
+  for (const auto& part : parts)
+    if (const auto* s = std::get_if<GeneratedSeries>(&part); s && s->path) return s->path;
+  return std::nullopt;
+}
+
+// The cubic piece holding t (at a joint the piece that starts there) and its local parameter.
+struct Piece {
+  Vec2 p[4];
+  double u, scale;  // d/dt = scale * d/du
+};
+Piece piece_at(const Path& path, double t, const CaptionField& f) {
+  const std::size_t n = path.breaks.size() - 1;
+  if (path.bezier.size() != 3 * n + 1)
+    fail(f, "value: " + f.function + "() needs a curve made of cubic pieces (bezier of degree 3 or less, interp, "
+            "relaxed_bspline); \"" + f.element + "\" is not one");
+  std::size_t k = 0;
+  while (k + 1 < n && t >= path.breaks[k + 1]) ++k;
+  const double a = path.breaks[k], b = path.breaks[k + 1];
+  Piece pc{{path.bezier[3 * k], path.bezier[3 * k + 1], path.bezier[3 * k + 2], path.bezier[3 * k + 3]},
+           (t - a) / (b - a), 1 / (b - a)};
+  return pc;
+}
+
+Vec2 d1(const Piece& c) {
+  const double u = c.u, v = 1 - u, s = 3 * c.scale;
+  auto comp = [&](double Vec2::*m) {
+    return s * (v * v * (c.p[1].*m - c.p[0].*m) + 2 * u * v * (c.p[2].*m - c.p[1].*m) + u * u * (c.p[3].*m - c.p[2].*m));
+  };
+  return {comp(&Vec2::x), comp(&Vec2::y)};
+}
+
+Vec2 d2(const Piece& c) {
+  const double u = c.u, s = 6 * c.scale * c.scale;
+  auto comp = [&](double Vec2::*m) {
+    return s * ((1 - u) * (c.p[2].*m - 2 * c.p[1].*m + c.p[0].*m) + u * (c.p[3].*m - 2 * c.p[2].*m + c.p[1].*m));
+  };
+  return {comp(&Vec2::x), comp(&Vec2::y)};
+}
+
+// The t in [a, b] where y(t) is largest (sign = 1) or smallest (sign = -1): the best of 4096
+// even steps, then golden-section search between its neighbours.
+double extremum(const Path& path, double a, double b, double sign) {
+  auto g = [&](double t) { return sign * path.at(t).y; };
+  constexpr int kSteps = 4096;
+  int best = 0;
+  double best_v = g(a);
+  for (int i = 1; i <= kSteps; ++i)
+    if (const double v = g(a + (b - a) * i / kSteps); v > best_v) best_v = v, best = i;
+  double lo = a + (b - a) * std::max(0, best - 1) / kSteps, hi = a + (b - a) * std::min(kSteps, best + 1) / kSteps;
+  const double r = (std::sqrt(5.0) - 1) / 2;
+  double x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo), g1 = g(x1), g2 = g(x2);
+  for (int it = 0; it < 200 && hi - lo > 1e-14 * std::max(1.0, std::abs(lo)); ++it) {
+    if (g1 < g2) lo = x1, x1 = x2, g1 = g2, x2 = lo + r * (hi - lo), g2 = g(x2);
+    else hi = x2, x2 = x1, g2 = g1, x1 = hi - r * (hi - lo), g1 = g(x1);
+  }
+  const double t = (lo + hi) / 2;
+  return g(t) >= best_v ? t : a + (b - a) * best / kSteps;
+}
+
+Value evaluate(const FigureSpec& spec, const CaptionField& f) {
+  const PlotElement& e = find_element(spec, f);
+  const std::string& fn = f.function;
+  if (fn == "knot") {
+    const std::vector<Vec2>* pts = input_points(e);
+    if (!pts) fail(f, "value: \"" + f.element + "\" has no points or knots for knot()");
+    const auto i = static_cast<std::size_t>(f.args[0]);
+    if (i >= pts->size())
+      fail(f, "value: knot(" + std::to_string(i) + ") of \"" + f.element + "\", which has " +
+                  std::to_string(pts->size()) + " points (0 .. " + std::to_string(pts->size() - 1) + ")");
+    return {{(*pts)[i].x, (*pts)[i].y}, true};
+  }
+  if (fn == "b1" || fn == "b2") {
+    const auto* lb = std::get_if<LocalBetasElement>(&e);
+    if (!lb) fail(f, "value: " + fn + "() reads the betas of a local_betas element; \"" + f.element + "\" is not one");
+    const auto i = static_cast<std::size_t>(f.args[0]);
+    if (i >= lb->betas.size())
+      fail(f, "value: " + fn + "(" + std::to_string(i) + ") of \"" + f.element + "\", which has " +
+                  std::to_string(lb->betas.size()) + " knots");
+    return {{lb->betas[i][fn == "b1" ? 0 : 1], 0}, false};
+  }
+  if (!is_generated(e))
+    fail(f, "element: \"" + f.element + "\" is not a generated element (bezier, lagrange, interp, relaxed_bspline, "
+            "subdivision, local_betas, ...): " + fn + "() reads generated data");
+  const std::vector<GeneratedPart> parts = generate(e);
+  if (fn == "count") {
+    std::size_t n = 0;
+    for (const auto& part : parts)
+      if (const auto* s = std::get_if<GeneratedSeries>(&part)) {
+        if (s->path) fail(f, "value: count() counts the points of a point set; \"" + f.element + "\" draws a curve");
+        n += s->series.points.size();
+      }
+    return {{static_cast<double>(n), 0}, false};
+  }
+  const std::optional<Path> path = path_of(parts);
+  if (!path || path->breaks.size() < 2)
+    fail(f, "value: " + fn + "() needs a curve; \"" + f.element + "\" draws points only");
+  const double t0 = path->breaks.front(), t1 = path->breaks.back();
+  for (double t : f.args)
+    if (!(t >= t0 && t <= t1))
+      fail(f, "value: " + fn + "(): t = " + caption_number(t, 6) + " is outside the curve's parameter range [" +
+                  caption_number(t0, 6) + ", " + caption_number(t1, 6) + "]");
+  const double t = f.args[0];
+  if (fn == "point" || fn == "x" || fn == "y") {
+    const Vec2 p = path->at(t);
+    if (fn == "point") return {{p.x, p.y}, true};
+    return {{fn == "x" ? p.x : p.y, 0}, false};
+  }
+  if (fn == "d1" || fn == "d2") {
+    const Vec2 d = fn == "d1" ? d1(piece_at(*path, t, f)) : d2(piece_at(*path, t, f));
+    return {{d.x, d.y}, true};
+  }
+  if (fn == "curvature") {
+    const Piece c = piece_at(*path, t, f);
+    const Vec2 v = d1(c), a = d2(c);
+    const double speed = std::hypot(v.x, v.y);
+    if (!(speed > 0)) fail(f, "value: curvature(): the curve stands still at t = " + caption_number(t, 6));
+    return {{(v.x * a.y - v.y * a.x) / (speed * speed * speed), 0}, false};
+  }
+  // max_y, min_y, argmax_y, argmin_y
+  const double sign = fn.find("max") != std::string::npos ? 1 : -1;
+  const double te = extremum(*path, f.args[0], f.args[1], sign);
+  return {{fn.rfind("arg", 0) == 0 ? te : path->at(te).y, 0}, false};
+}
+
+}  // namespace
+
+std::string caption_number(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s[0] == '-') {
+    // No "−0.00": a value that rounds to zero is zero.
+    if (s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+    else s.replace(0, 1, "\u2212");
+  }
+  return s;
+}
+
+std::vector<CaptionField> parse_caption_fields(TableReader& r, const std::string& caption, const std::string& caption_key) {
+  std::vector<CaptionField> fields;
+  std::set<std::string> names;
+  r.each_table("caption_field", [&](TableReader& s, const toml::table&) {
+    CaptionField f;
+    f.origin = s.origin("");
+    const auto name = s.opt_string("name");
+    if (!name || !is_name(*name)) s.fail("name", "needs name = \"NAME\" (letters, digits, _), used as {=NAME} in the caption");
+    if (!names.insert(*name).second) s.fail("name", "\"" + *name + "\" is declared twice");
+    f.name = *name;
+    const auto element = s.opt_string("element");
+    if (!element || element->empty())
+      s.fail("element", "needs element = \"KEY PATH\" of a plot element, e.g. \"axes[1].bezier[0]\"");
+    f.element = *element;
+    const auto value = s.opt_string("value");
+    if (!value) s.fail("value", "needs value = \"FUNCTION(ARGUMENTS)\", e.g. \"d2(0)\"");
+    if (std::string bad = parse_value(*value, f); !bad.empty()) s.fail("value", bad);
+    f.decimals = s.integer("decimals", 2, 0, 12);
+    fields.push_back(std::move(f));
+  });
+  std::string problem;
+  const std::vector<Ref> refs = references(caption, problem);
+  if (!problem.empty()) throw SpecFileError(caption_key + ": " + problem);
+  std::set<std::string> used;
+  for (const Ref& ref : refs) {
+    if (!names.count(ref.name))
+      throw SpecFileError(caption_key + ": {=" + ref.name + "} names no [[caption_field]] (declare it with name = \"" +
+                          ref.name + "\")");
+    used.insert(ref.name);
+  }
+  for (const CaptionField& f : fields)
+    if (!used.count(f.name)) throw SpecFileError(f.origin + ": \"" + f.name + "\" is declared but the caption never uses {=" + f.name + "}");
+  return fields;
+}
+
+std::string caption_text(const FigureSpec& spec) {
+  if (spec.caption_fields.empty()) return spec.caption;
+  std::string problem;
+  const std::vector<Ref> refs = references(spec.caption, problem);
+  std::map<std::string, std::string> values;
+  for (const CaptionField& f : spec.caption_fields) {
+    const Value v = evaluate(spec, f);
+    values[f.name] = v.vector ? "(" + caption_number(v.v[0], f.decimals) + ", " + caption_number(v.v[1], f.decimals) + ")"
+                              : caption_number(v.v[0], f.decimals);
+  }
+  std::string out;
+  std::size_t at = 0;
+  for (const Ref& ref : refs) {
+    out += spec.caption.substr(at, ref.begin - at);
+    const auto it = values.find(ref.name);
+    out += it != values.end() ? it->second : spec.caption.substr(ref.begin, ref.end - ref.begin);
+    at = ref.end;
+  }
+  return out + spec.caption.substr(at);
+}
+
+}  // namespace splinefig::figures::detail
