@@ -42,7 +42,7 @@ bool on(const Rendered& f, double x, double y, const char* color, double at_leas
 }  // namespace
 
 TEST_CASE("companion figures show their documented checks") {
-  SECTION("s003-fig01: the degree-10 Lagrange polynomial swings to 2.76 and 3.17 near the ends") {
+  SECTION("s003-fig01: the degree-10 Lagrange polynomial passes 2.76 and 3.17 at t = 0.5 and 9.5") {
     const Rendered f = render("s003-fig01");
     // P(1/2) = 362017/131072, P(19/2) = 415701/131072 (exact rational arithmetic).
     CHECK(on(f, 0.5, 362017.0 / 131072, "#d62728"));
@@ -97,13 +97,18 @@ TEST_CASE("companion figures show their documented checks") {
   }
   SECTION("local-betas: the joints take the uniform Beta-spline values of their vertex") {
     const Rendered f = render("local-betas");
-    // Bias 10 at vertex (3,2): the joint is (2000 x2 + 440 x3 + 2 x4)/2442 with the memo's
-    // B_{10,0} (2b1^3 = 2000, 4(b1^2 + b1) = 440, d = 2442): (5328/2442, 880/2442).
-    CHECK(on(f, 5328.0 / 2442, 880.0 / 2442, "#d62728"));
-    // Tension 25 at vertex (2,0): B_{1,25} gives (2 x1 + 33 x2 + 2 x3)/37 = (74/37, 8/37).
-    CHECK(on(f, 2, 8.0 / 37, "#1f77b4"));
-    // Far from vertices 3 and 4 both are the B-spline: the joint at (5,2) is (5, 4/3).
-    const AxesMap m = f.map();
+    auto on_panel = [&](size_t axes, double x, double y, const char* color) {
+      const AxesMap m = f.map(axes);
+      return near_share(f.png, m.px(x), m.py(y), hex(color)) > 0.5;
+    };
+    // Bias 2 at vertex (3,2) (top panel): the joint is (2b1^3 x2 + 4(b1^2 + b1) x3 + 2 x4)/d with
+    // the memo's B_{2,0} (2b1^3 = 16, 4(b1^2 + b1) = 24, d = 42): (112/42, 48/42).
+    CHECK(on_panel(0, 112.0 / 42, 48.0 / 42, "#0072b2"));
+    // Tension 20 at the same vertex (bottom): B_{1,20} gives (2 x2 + 28 x3 + 2 x4)/32 = (3, 56/32).
+    CHECK(on_panel(1, 3, 56.0 / 32, "#0072b2"));
+    // Far from vertex 4 every curve is the B-spline: the joint at (5,2) is (5, 4/3), dark
+    // where the curves lie over the dashed B-spline.
+    const AxesMap m = f.map(1);
     const Rgb p = f.png.at(static_cast<int>(m.px(5)), static_cast<int>(m.py(4.0 / 3)));
     CHECK(p.r + p.g + p.b < 3 * 200);
   }

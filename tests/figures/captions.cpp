@@ -1,0 +1,289 @@
+// The built-in captions state values of their figures' data only through computed fields
+// (docs/spec.md, "Caption fields"). For each such figure the values are worked out here again,
+// independently of the library (the seeds' formulas by hand, exact where the data allow, or an
+// evaluation written here), and the built caption must print them; the field errors are
+// checked at the end.
+#include <catch2/catch.hpp>
+
+#include "spec_error_check.hpp"
+
+#include <splinefig/figures/figure.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace splinefig::figures;
+
+namespace {
+
+const std::string kSpecs = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/";
+
+FigureSpec builtin(const std::string& name) { return load_spec(kSpecs + name + ".toml"); }
+
+// The caption as index.json and the gallery get it.
+std::string built_caption(const FigureSpec& spec) { return layout_figure(spec).caption; }
+
+// The k-th element of kind T in panel `axes` of the spec.
+template <class T>
+const T& element(const FigureSpec& spec, std::size_t axes, std::size_t k) {
+  std::size_t a = 0;
+  for (const auto& item : spec.items)
+    if (const auto* ax = std::get_if<AxesSpec>(&item); ax && a++ == axes)
+      for (const auto& e : ax->elements)
+        if (const auto* x = std::get_if<T>(&e); x && k-- == 0) return *x;
+  throw std::runtime_error("no such element");
+}
+
+// A number as a caption prints it: fixed decimals, U+2212 for minus.
+std::string fmt(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  return s[0] == '-' ? "\u2212" + s.substr(1) : s;
+}
+std::string fmt(Vec2 p, int decimals) { return "(" + fmt(p.x, decimals) + ", " + fmt(p.y, decimals) + ")"; }
+
+Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// The Lagrange polynomial through (t_i, y_i) at t, as the textbook sum of y_i l_i(t), in long
+// double (the library evaluates its own form).
+long double lagrange_at(const std::vector<Vec2>& d, long double t) {
+  long double sum = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    long double l = 1;
+    for (std::size_t j = 0; j < d.size(); ++j)
+      if (j != i) l *= (t - d[j].x) / static_cast<long double>(d[i].x - d[j].x);
+    sum += d[i].y * l;
+  }
+  return sum;
+}
+
+// Its largest value on [a, b]: a grid of 20000 steps, then ternary search around the best.
+std::pair<double, double> lagrange_max(const std::vector<Vec2>& d, double a, double b) {
+  constexpr int n = 20000;
+  int best = 0;
+  for (int i = 1; i <= n; ++i)
+    if (lagrange_at(d, a + (b - a) * i / n) > lagrange_at(d, a + (b - a) * best / n)) best = i;
+  long double lo = a + (b - a) * std::max(best - 1, 0) / n, hi = a + (b - a) * std::min(best + 1, n) / n;
+  for (int it = 0; it < 200; ++it) {
+    const long double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+    (lagrange_at(d, m1) < lagrange_at(d, m2) ? lo : hi) = lagrange_at(d, m1) < lagrange_at(d, m2) ? m1 : m2;
+  }
+  const long double t = (lo + hi) / 2;
+  return {static_cast<double>(t), static_cast<double>(lagrange_at(d, t))};
+}
+
+}  // namespace
+
+TEST_CASE("s003-fig03's caption prints P''(0) = 6(P0 - 2P1 + P2) of its two curves", "[captions]") {
+  const FigureSpec spec = builtin("s003-fig03");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  // Seed 003 §2: P''(0) = 6(P0 - 2P1 + P2), from the drawn curves' own control points. The
+  // data are halves, so these sums are exact in doubles.
+  const auto& left = element<BezierElement>(spec, 0, 0).points;
+  const auto& right = element<BezierElement>(spec, 1, 0).points;
+  const Vec2 l = 6 * (left[0] - 2 * left[1] + left[2]), r = 6 * (right[0] - 2 * right[1] + right[2]);
+  CHECK(contains(caption, "so P''(0) = " + fmt(l, 0) + " and"));
+  CHECK(contains(caption, "with P₂ = " + fmt(right[2], 1) + " the midpoint"));
+  CHECK(contains(caption, "6(P₀ − 2P₁ + P₂) = " + fmt(r, 0) + "."));
+  // By hand: 6((0,0) - 2(1,1) + (2,2)) = (0, 0); 6((0,0) - 2(1,1) + (2.5,1)) = (3, -6).
+  CHECK(contains(caption, "P''(0) = (0, 0)"));
+  CHECK(contains(caption, "= (3, −6)."));
+}
+
+TEST_CASE("s003-fig01's caption prints where the Lagrange polynomial peaks near the ends", "[captions]") {
+  const FigureSpec spec = builtin("s003-fig01");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  const auto& data = element<LagrangeElement>(spec, 0, 0).points;
+  REQUIRE(data.size() == 11);
+  const auto [tl, yl] = lagrange_max(data, 0, 1);
+  const auto [tr, yr] = lagrange_max(data, 9, 10);
+  CHECK(contains(caption, "swings out to " + fmt(yl, 2) + " (at t = " + fmt(tl, 2) + ") and " + fmt(yr, 2) + " (at t = " +
+                              fmt(tr, 2) + ")"));
+  // The values the seed's figure shows: peaks of about 3.43 at t = 0.30 and 3.72 at t = 9.70,
+  // above the values at the half-integers (P(1/2) = 362017/131072 = 2.76, P(19/2) = 3.17).
+  CHECK(contains(caption, "3.43 (at t = 0.30) and 3.72 (at t = 9.70)"));
+  CHECK(yl > 362017.0 / 131072);
+}
+
+TEST_CASE("s003-fig05's caption prints the curvature jump at S, and the pieces bend opposite ways", "[captions]") {
+  const FigureSpec spec = builtin("s003-fig05");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  const auto& P = element<BezierElement>(spec, 0, 0).points;
+  const auto& Q = element<BezierElement>(spec, 0, 1).points;
+  REQUIRE(P.size() == 4);
+  REQUIRE(Q.size() == 4);
+  const Vec2 S = P[3];
+  // First derivatives match: S is the midpoint of P2 Q1.
+  CHECK(S.x - P[2].x == Q[1].x - S.x);
+  CHECK(S.y - P[2].y == Q[1].y - S.y);
+  // Seed 003 §3: at S the derivatives are 3(S - P2), 6(P1 - 2P2 + S) and 3(Q1 - S),
+  // 6(S - 2Q1 + Q2); the signed curvature is cross(P', P'') / |P'|^3.
+  auto kappa = [](Vec2 d1, Vec2 d2) { return cross(d1, d2) / std::pow(std::hypot(d1.x, d1.y), 3); };
+  const double kp = kappa(3 * (S - P[2]), 6 * (P[1] - 2 * P[2] + S));
+  const double kq = kappa(3 * (Q[1] - S), 6 * (S - 2 * Q[1] + Q[2]));
+  CHECK(contains(caption, "from " + fmt(kp, 2) + " to " + fmt(kq, 2) + ":"));
+  CHECK(contains(caption, "from −0.48 to 0.24:"));
+  // "bends right all the way to S and the second bends left": the sign of cross(B', B'') along
+  // each cubic, B' = 3[(1-u)^2 (B1-B0) + 2u(1-u)(B2-B1) + u^2 (B3-B2)], B'' = 6[(1-u)(B2-2B1+B0) + u(B3-2B2+B1)].
+  auto turn = [](const std::vector<Vec2>& B, double u) {
+    const Vec2 d1 = 3 * ((1 - u) * (1 - u) * (B[1] - B[0]) + 2 * u * (1 - u) * (B[2] - B[1]) + u * u * (B[3] - B[2]));
+    const Vec2 d2 = 6 * ((1 - u) * (B[2] - 2 * B[1] + B[0]) + u * (B[3] - 2 * B[2] + B[1]));
+    return cross(d1, d2);
+  };
+  for (int i = 0; i <= 100; ++i) {
+    CHECK(turn(P, i / 100.0) < 0);
+    CHECK(turn(Q, i / 100.0) > 0);
+  }
+}
+
+TEST_CASE("s003-fig12's caption prints B3 of both curves, and S1 and S5 are labelled at the joints", "[captions]") {
+  const FigureSpec spec = builtin("s003-fig12");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  const auto& before = element<RelaxedBsplineElement>(spec, 0, 0).points;
+  const auto& after = element<RelaxedBsplineElement>(spec, 0, 2).points;
+  REQUIRE(before.size() == 7);
+  REQUIRE(after.size() == 7);
+  CHECK(contains(caption, "with B₃ at " + fmt(before[3], 0) + " (blue) and at " + fmt(after[3], 0) + " (red)"));
+  CHECK(contains(caption, "B₃ at (4, 1) (blue) and at (4, −1) (red)"));
+  // Seed 003 §4: the joints are S_i = (B_(i-1) + 4B_i + B_(i+1))/6; S1 and S5 do not involve B3.
+  const Vec2 S1 = (1.0 / 6) * (before[0] + 4 * before[1] + before[2]);
+  const Vec2 S5 = (1.0 / 6) * (before[4] + 4 * before[5] + before[6]);
+  int found = 0;
+  for (const auto& e : std::get<AxesSpec>(spec.items.back()).elements)
+    if (const auto* t = std::get_if<TextElement>(&e)) {
+      const Vec2 want = t->text == "$S_1$" ? S1 : S5;
+      if (t->text != "$S_1$" && t->text != "$S_5$") continue;
+      ++found;
+      CHECK(t->at.x == Approx(want.x).margin(1e-12));
+      CHECK(t->at.y == Approx(want.y).margin(1e-12));
+    }
+  CHECK(found == 2);
+}
+
+TEST_CASE("caption fields: values, number format and errors", "[captions]") {
+  const std::string head = "caption = \"P''(0) = {=d}\"\n";
+  const std::string axes =
+      "[axes]\nx_range = [0, 3]\ny_range = [0, 3]\n[[axes.bezier]]\npoints = [[0, 0], [1, 1], [2.5, 1], [3, 0]]\n"
+      "[[axes.lagrange]]\npoints = [[0, 0], [1, 1], [2, 0]]\n[[axes.bezier]]\npoints = [[1, 1], [2, 3], [4, 3], [5, 1]]\n";
+  auto field = [](const std::string& body) { return "[[caption_field]]\nname = \"d\"\n" + body + "\n"; };
+  auto caption_of = [&](const std::string& body) {
+    return layout_figure(parse_spec(head + field(body) + axes, "c.toml")).caption;
+  };
+  // By hand: P''(0) = 6((0,0) - 2(1,1) + (2.5,1)) = (3, -6); P''(1) = 6((1,1) - 2(2.5,1) + (3,0)) = (-6, -6);
+  // P'(1) = 3((3,0) - (2.5,1)) = (1.5, -3); P(1/2) = ((0,0) + 3(1,1) + 3(2.5,1) + (3,0))/8 = (13.5/8, 6/8).
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"d2(0)\"\ndecimals = 1") == "P''(0) = (3.0, −6.0)");
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"d2(1)\"\ndecimals = 0") == "P''(0) = (−6, −6)");
+  // Off the origin: 6((1,1) - 2(2,3) + (4,3)) = (6, -12) at 0; 6((2,3) - 2(4,3) + (5,1)) = (-6, -12) at 1.
+  CHECK(caption_of("element = \"axes.bezier[1]\"\nvalue = \"d2(0)\"\ndecimals = 0") == "P''(0) = (6, −12)");
+  CHECK(caption_of("element = \"axes.bezier[1]\"\nvalue = \"d2(1)\"\ndecimals = 0") == "P''(0) = (−6, −12)");
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"d1(1)\"") == "P''(0) = (1.50, −3.00)");
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"point(0.5)\"\ndecimals = 4") == "P''(0) = (1.6875, 0.7500)");
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"y(0.5)\"\ndecimals = 3") == "P''(0) = 0.750");
+  // Curvature at 0: cross((3,3), (3,-6)) / |(3,3)|^3 = -27 / (18 sqrt 18) = -0.35355...
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"curvature(0)\"\ndecimals = 4") == "P''(0) = −0.3536");
+  // The parabola through (0,0), (1,1), (2,0) is 2t - t^2: largest 1 at t = 1, smallest 0 at 0.
+  CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"max_y(0, 2)\"\ndecimals = 6") == "P''(0) = 1.000000");
+  CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"argmax_y(0.5, 2)\"\ndecimals = 6") == "P''(0) = 1.000000");
+  CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"argmin_y(0.5, 2)\"\ndecimals = 6") == "P''(0) = 2.000000");
+  CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"knot(2)\"\ndecimals = 0") == "P''(0) = (2, 0)");
+  // No "−0": -1e-9 at two decimals is 0.00.
+  CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"y(2)\"") == "P''(0) = 0.00");
+
+  struct Case {
+    std::string text, expect;
+  };
+  const std::vector<Case> cases = {
+      {"caption = \"{=nope}\"\n" + axes, "c.toml:1: caption: {=nope} names no [[caption_field]]"},
+      {"caption = \"{=bad name}\"\n" + axes, "c.toml:1: caption: a field is written {=NAME}"},
+      {"caption = \"x\"\n" + field("element = \"axes.bezier[0]\"\nvalue = \"d2(0)\"") + axes,
+       "c.toml:2: caption_field[0]: \"d\" is declared but the caption never uses {=d}"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"slope(0)\""), "c.toml:5: caption_field[0].value: \"slope\" is not a value function"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"d2(0, 1)\""), "c.toml:5: caption_field[0].value: d2() takes 1 argument, got 2"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"d2(x)\""), "c.toml:5: caption_field[0].value: \"x\" is not a finite number"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"max_y(1, 0)\""), "c.toml:5: caption_field[0].value: max_y(a, b) needs a < b"},
+      {head + field("value = \"d2(0)\""), "c.toml:2: caption_field[0].element: needs element"},
+      {head + field("element = \"axes.bezier[3]\"\nvalue = \"d2(0)\"") + axes,
+       "c.toml:2: caption_field[0]: element: \"axes.bezier[3]\" is no plot element of this spec"},
+      {head + field("element = \"axes.lagrange[0]\"\nvalue = \"d2(0)\"") + axes,
+       "c.toml:2: caption_field[0]: value: d2() needs a curve made of cubic pieces"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"d2(1.5)\"") + axes,
+       "c.toml:2: caption_field[0]: value: d2(): t = 1.500000 is outside the curve's parameter range [0.000000, 1.000000]"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"knot(4)\"") + axes,
+       "c.toml:2: caption_field[0]: value: knot(4) of \"axes.bezier[0]\", which has 4 points"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"b1(0)\"") + axes,
+       "c.toml:2: caption_field[0]: value: b1() reads the betas of a local_betas element"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"count()\"") + axes,
+       "c.toml:2: caption_field[0]: value: count() counts the points of a point set"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"d2(0)\"\ndecimals = 13") + axes,
+       "c.toml:6: caption_field[0].decimals: must be in [0, 12]"},
+  };
+  figtest::check_spec_errors(cases, "c.toml");
+}
+
+TEST_CASE("s002-fig474's caption prints the point counts 3 + 2^k, and (b) is the tree of groups", "[captions]") {
+  const FigureSpec spec = builtin("s002-fig474");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  // Seed 002: step k has 3 + 2^k distinct points: 5 after one step, 7 after two.
+  CHECK(element<SubdivisionElement>(spec, 0, 0).steps == 1);
+  CHECK(element<SubdivisionElement>(spec, 0, 1).steps == 2);
+  CHECK(contains(caption, "the " + std::to_string(3 + (1 << 1)) + " points of the first step and the " +
+                              std::to_string(3 + (1 << 2)) + " of the second"));
+  // (b): the groups after three steps. Group j of step k is P^k_j .. P^k_(j+3); it makes groups
+  // 2j and 2j + 1 of step k + 1 (P^1_0123 -> P^2_0123, P^2_1234; P^1_1234 -> P^2_2345, P^2_3456).
+  std::vector<std::string> want;
+  for (int k = 0; k <= 3; ++k)
+    for (int j = 0; j < (1 << k); ++j) {
+      std::string idx;
+      for (int i = j; i < j + 4; ++i) idx += (j + 3 >= 10 && i > j ? " " : "") + std::to_string(i);
+      want.push_back("$P^" + std::to_string(k) + "_{" + idx + "}$");
+    }
+  std::vector<std::string> got;
+  std::size_t edges = 0;
+  std::size_t a = 0;
+  for (const auto& item : spec.items)
+    if (const auto* ax = std::get_if<AxesSpec>(&item); ax && a++ == 1)
+      for (const auto& e : ax->elements) {
+        if (const auto* t = std::get_if<TextElement>(&e)) got.push_back(t->text);
+        if (std::holds_alternative<SeriesElement>(e)) ++edges;
+      }
+  CHECK(got == want);
+  CHECK(edges == 2 + 4 + 8);  // two children for each of the 1 + 2 + 4 groups above the last row
+}
+
+TEST_CASE("local-betas' caption prints the changed shape values and the joints where the change ends", "[captions]") {
+  const FigureSpec spec = builtin("local-betas");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  const auto& a = element<LocalBetasElement>(spec, 0, 0);
+  const auto& b = element<LocalBetasElement>(spec, 0, 1);
+  const auto& c = element<LocalBetasElement>(spec, 1, 0);
+  const auto& d = element<LocalBetasElement>(spec, 1, 1);
+  // Only the 4th vertex differs from the B-spline's (1, 0), in b1 on top and b2 below.
+  for (const auto* e : {&a, &b, &c, &d})
+    for (std::size_t i = 0; i < e->betas.size(); ++i)
+      if (i != 3) CHECK(e->betas[i] == std::array<double, 2>{1, 0});
+  CHECK(contains(caption, "bias b₁ = " + fmt(a.betas[3][0], 1) + " and " + fmt(b.betas[3][0], 0) + " (top), tension b₂ = " +
+                              fmt(c.betas[3][1], 0) + " and " + fmt(d.betas[3][1], 0) + " (bottom)"));
+  CHECK(contains(caption, "bias b₁ = 0.5 and 2 (top), tension b₂ = 5 and 20 (bottom)"));
+  // The joints under vertices 3 and 5 keep their B-spline places (B_(i-1) + 4B_i + B_(i+1))/6,
+  // their own vertices' values being (1, 0): ((1,2) + 4(2,0) + (3,2))/6 = (2, 2/3) and
+  // ((3,2) + 4(4,0) + (5,2))/6 = (4, 2/3).
+  const auto& B = a.knots;
+  const Vec2 j3 = (1.0 / 6) * (B[1] + 4 * B[2] + B[3]), j5 = (1.0 / 6) * (B[3] + 4 * B[4] + B[5]);
+  CHECK(contains(caption, "at the joint " + fmt(j3, 2) + " under vertex 3 and rejoin it at the joint " + fmt(j5, 2) +
+                              " under vertex 5"));
+  CHECK(contains(caption, "(2.00, 0.67) under vertex 3"));
+}
