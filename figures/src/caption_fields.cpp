@@ -20,7 +20,7 @@ const std::map<std::string, int, std::less<>>& functions() {
   static const std::map<std::string, int, std::less<>> f{
       {"point", 1},    {"x", 1},        {"y", 1},        {"d1", 1},       {"d2", 1},   {"curvature", 1},
       {"max_y", 2},    {"min_y", 2},    {"argmax_y", 2}, {"argmin_y", 2}, {"knot", 1}, {"count", 0},
-      {"b1", 1},       {"b2", 1}};
+      {"b1", 1},       {"b2", 1},       {"item", 1}};
   return f;
 }
 
@@ -43,7 +43,7 @@ std::string parse_value(const std::string& text, CaptionField& f) {
   const auto fn = functions().find(f.function);
   if (fn == functions().end())
     return "\"" + f.function + "\" is not a value function (point, x, y, d1, d2, curvature, max_y, min_y, argmax_y, "
-           "argmin_y, knot, count, b1, b2)";
+           "argmin_y, knot, count, item, b1, b2)";
   const std::string inner = trim(text.substr(open + 1, close - open - 1));
   std::size_t at = 0;
   while (!inner.empty() && at <= inner.size()) {
@@ -58,7 +58,7 @@ std::string parse_value(const std::string& text, CaptionField& f) {
   if (static_cast<int>(f.args.size()) != fn->second)
     return f.function + "() takes " + std::to_string(fn->second) + " argument" + (fn->second == 1 ? "" : "s") + ", got " +
            std::to_string(f.args.size());
-  if (f.function == "knot" || f.function == "b1" || f.function == "b2")
+  if (f.function == "knot" || f.function == "item" || f.function == "b1" || f.function == "b2")
     if (f.args[0] < 0 || f.args[0] != std::floor(f.args[0]) || f.args[0] > 1e9)
       return f.function + "() takes an index 0, 1, 2, ..., got " + caption_number(f.args[0], 6);
   if (f.args.size() == 2 && !(f.args[0] < f.args[1])) return f.function + "(a, b) needs a < b";
@@ -208,14 +208,19 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
     fail(f, "element: \"" + f.element + "\" is not a generated element (bezier, lagrange, interp, relaxed_bspline, "
             "subdivision, local_betas, ...): " + fn + "() reads generated data");
   const std::vector<GeneratedPart> parts = generate(e);
-  if (fn == "count") {
-    std::size_t n = 0;
+  if (fn == "count" || fn == "item") {
+    std::vector<Vec2> pts;
     for (const auto& part : parts)
       if (const auto* s = std::get_if<GeneratedSeries>(&part)) {
-        if (s->path) fail(f, "value: count() counts the points of a point set; \"" + f.element + "\" draws a curve");
-        n += s->series.points.size();
+        if (s->path) fail(f, "value: " + fn + "() reads the points of a point set; \"" + f.element + "\" draws a curve");
+        pts.insert(pts.end(), s->series.points.begin(), s->series.points.end());
       }
-    return {{static_cast<double>(n), 0}, false};
+    if (fn == "count") return {{static_cast<double>(pts.size()), 0}, false};
+    const auto i = static_cast<std::size_t>(f.args[0]);
+    if (i >= pts.size())
+      fail(f, "value: item(" + std::to_string(i) + ") of \"" + f.element + "\", which draws " + std::to_string(pts.size()) +
+                  " points");
+    return {{pts[i].x, pts[i].y}, true};
   }
   const std::optional<Path> path = path_of(parts);
   if (!path || path->breaks.size() < 2)

@@ -225,7 +225,7 @@ TEST_CASE("caption fields: values, number format and errors", "[captions]") {
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"b1(0)\"") + axes,
        "c.toml:2: caption_field[0]: value: b1() reads the betas of a local_betas element"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"count()\"") + axes,
-       "c.toml:2: caption_field[0]: value: count() counts the points of a point set"},
+       "c.toml:2: caption_field[0]: value: count() reads the points of a point set"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"d2(0)\"\ndecimals = 13") + axes,
        "c.toml:6: caption_field[0].decimals: must be in [0, 12]"},
   };
@@ -286,4 +286,38 @@ TEST_CASE("local-betas' caption prints the changed shape values and the joints w
   CHECK(contains(caption, "at the joint " + fmt(j3, 2) + " under vertex 3 and rejoin it at the joint " + fmt(j5, 2) +
                               " under vertex 5"));
   CHECK(contains(caption, "(2.00, 0.67) under vertex 3"));
+}
+
+TEST_CASE("s003-fig14's caption prints the control points that solve the seed's system", "[captions]") {
+  const FigureSpec spec = builtin("s003-fig14");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  const auto& S = element<InterpElement>(spec, 0, 0).points;
+  REQUIRE(S.size() == 5);
+  // Seed 003 §5: B0 = S0, B4 = S4 and B_(i-1) + 4B_i + B_(i+1) = 6S_i for i = 1, 2, 3; for
+  // S = (1,-1), (-1,2), (1,4), (4,3), (7,5) the solution is B1 = (-2,2), B2 = (1,5), B3 = (4,2).
+  const std::vector<Vec2> B{S[0], {-2, 2}, {1, 5}, {4, 2}, S[4]};
+  for (int i = 1; i <= 3; ++i) {
+    const Vec2 lhs = B[i - 1] + 4 * B[i] + B[i + 1], rhs = 6 * S[i];
+    CHECK(lhs.x == rhs.x);
+    CHECK(lhs.y == rhs.y);
+  }
+  CHECK(contains(caption, "B₁ = " + fmt(B[1], 0) + ", B₂ = " + fmt(B[2], 0) + ", B₃ = " + fmt(B[3], 0) + ", B₄ = S₄"));
+  // The first piece's Bezier points: S0, (2B0 + B1)/3, (B0 + 2B1)/3, S1 = (1,-1), (0,0), (-1,1), (-1,2).
+  const Vec2 z1 = (1.0 / 3) * (2 * B[0] + B[1]), z2 = (1.0 / 3) * (B[0] + 2 * B[1]);
+  CHECK(contains(caption, "e.g. " + fmt(S[0], 0) + ", " + fmt(z1, 0) + ", " + fmt(z2, 0) + ", " + fmt(S[1], 0) + " for the first"));
+  CHECK(contains(caption, "e.g. (1, −1), (0, 0), (−1, 1), (−1, 2) for the first"));
+}
+
+TEST_CASE("s003-fig17's caption prints the in-between heel (13 S0 + 22 S1 - 3 S2)/32", "[captions]") {
+  const FigureSpec spec = builtin("s003-fig17");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  const auto& e = element<InbetweenElement>(spec, 0, 0);
+  REQUIRE(e.frames.size() == 3);
+  REQUIRE(e.t == 0.5);
+  // DD-4(d): the relaxed spline through three keyframes at t = 1/2 is (13 S0 + 22 S1 - 3 S2)/32.
+  const Vec2 heel = (1.0 / 32) * (13 * e.frames[0][2] + 22 * e.frames[1][2] + (-3) * e.frames[2][2]);
+  CHECK(contains(caption, "= " + fmt(heel, 5) + "."));
+  CHECK(contains(caption, "(13 S₀ + 22 S₁ − 3 S₂)/32 = (1.61875, 0.20625)."));
 }
