@@ -62,8 +62,9 @@ fig::BatchOptions batch_options(const FiguresArgs& a) {
   o.date = fig::source_date_epoch();
   o.formats.clear();
   for (const auto& f : split(a.format)) {
-    if (!fig::is_figure_format(f)) throw Failure("--format " + a.format + ": \"" + f + "\" is not png, exr, svg or pdf");
-    if (std::find(o.formats.begin(), o.formats.end(), f) == o.formats.end()) o.formats.push_back(f);
+    const auto format = fig::format_named(f);
+    if (!format) throw Failure("--format " + a.format + ": \"" + f + "\" is not png, exr, svg or pdf");
+    if (std::find(o.formats.begin(), o.formats.end(), *format) == o.formats.end()) o.formats.push_back(*format);
   }
   return o;
 }

@@ -19,12 +19,6 @@ struct RenderArgs {
   int threads = 0;
 };
 
-std::string extension_of(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 const splinefig::cli::Registration reg{
     "render", "Render one TOML figure spec to a PNG, EXR, SVG or PDF file", [](CLI::App& app) {
       auto a = std::make_shared<RenderArgs>();
@@ -39,8 +33,8 @@ const splinefig::cli::Registration reg{
       return splinefig::cli::Runner([a] {
         using splinefig::cli::Failure;
         namespace fig = splinefig::figures;
-        const std::string ext = extension_of(a->out);
-        if (ext.size() < 2 || !fig::is_figure_format(ext.substr(1)))
+        const auto format = fig::format_of_path(a->out);
+        if (!format)
           throw Failure("-o " + a->out + ": the output must end in .png, .exr, .svg or .pdf");
         if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
         splinefig::cli::check_output_scale(a->scale);
@@ -58,7 +52,7 @@ const splinefig::cli::Registration reg{
           w.title = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
           w.date = fig::source_date_epoch();
           std::optional<splinefig::Image> raster;
-          fig::write_figure_file(f, a->out, ext.substr(1), w, raster);
+          fig::write_figure_file(f, a->out, *format, w, raster);
         } catch (const fig::SpecFileError& e) {
           throw Failure(e.what());
         }

@@ -4,6 +4,7 @@
 // where setup(CLI::App&) adds the options and returns the function that runs it.
 // The function returns the process exit code; it reports errors by throwing
 // splinefig::cli::Failure (one line, printed as "splinefig NAME: message").
+#include <splinefig/base/limits.hpp>
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/points_csv.hpp>
 
@@ -79,15 +80,18 @@ inline void check_input_file(const std::string& path, const std::string& what = 
 inline void check_output_scale(double scale) {
   if (!(scale > 0) || scale > 64) throw Failure("--scale " + std::to_string(scale) + ": must be in (0, 64]");
 }
-// --threads N: 0 is every core; more than max_threads is max_threads (docs/cli.md).
-inline constexpr int max_threads = 256;
+// --threads N: 0 is every core; more than kMaxThreads is kMaxThreads (docs/cli.md).
 inline int check_threads(int threads) {
   if (threads < 0) throw Failure("--threads " + std::to_string(threads) + ": must not be negative");
-  return std::min(threads, max_threads);
+  return std::min(threads, splinefig::kMaxThreads);
 }
-// --dpi N: spec pixels per inch, 0 (the default) for none, else in [1, 10000].
+// --dpi N: spec pixels per inch, 0 (the default) for none, else in [kMinDpi, kMaxDpi].
 inline double check_dpi(double dpi) {
-  if (dpi != 0 && !(dpi >= 1 && dpi <= 10000)) throw Failure("--dpi " + std::to_string(dpi) + ": must be in [1, 10000]");
+  if (dpi != 0 && !(dpi >= splinefig::kMinDpi && dpi <= splinefig::kMaxDpi)) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "--dpi %g: must be in [%g, %g]", dpi, splinefig::kMinDpi, splinefig::kMaxDpi);
+    throw Failure(buf);
+  }
   return dpi;
 }
 

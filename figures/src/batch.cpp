@@ -40,7 +40,7 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     w.date = o.date;
     std::optional<Image> raster;
     for (const auto& format : o.formats) {
-      const std::string file = s.name + "." + format;
+      const std::string file = s.name + "." + extension(format);
       write_figure_file(fig, (std::filesystem::path(o.out_dir) / file).string(), format, w, raster);
       fig.info.files.push_back(file);
     }
@@ -58,7 +58,7 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
 // image elements have; a false alarm only loads the module early).
 bool needs_image_io(const std::vector<SpecFile>& specs, const BatchOptions& o) {
   for (const auto& f : o.formats)
-    if (f != "png" && f != "svg" && f != "pdf") return true;
+    if (f == Format::exr) return true;
   for (const SpecFile& s : specs) {
     std::ifstream in(s.path, std::ios::binary);
     std::string text((std::istreambuf_iterator<char>(in)), {});

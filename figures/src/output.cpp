@@ -4,34 +4,60 @@
 #include <splinefig/image/io.hpp>
 #include <splinefig/vector/vector.hpp>
 
+#include <splinefig/base/extension.hpp>
+
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
 namespace splinefig::figures {
 
-bool is_figure_format(const std::string& ext) { return ext == "png" || ext == "exr" || ext == "svg" || ext == "pdf"; }
+std::optional<Format> format_named(std::string_view name) {
+  std::string n(name);
+  for (char& c : n) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  for (Format f : {Format::png, Format::exr, Format::svg, Format::pdf})
+    if (n == extension(f)) return f;
+  return std::nullopt;
+}
 
-void write_figure_file(const FigureScene& fig, const std::string& path, const std::string& format,
-                       const FigureFileOptions& o, std::optional<Image>& raster) {
-  if (o.dpi != 0 && !(o.dpi >= kMinDpi && o.dpi <= kMaxDpi))
-    throw std::invalid_argument("dpi " + std::to_string(o.dpi) + " is outside [1, 10000]");
-  if (format == "svg" || format == "pdf") {
+std::optional<Format> format_of_path(const std::string& path) {
+  const std::string e = lower_extension(path);
+  return e.empty() ? std::nullopt : format_named(e);
+}
+
+const char* extension(Format format) {
+  switch (format) {
+    case Format::png: return "png";
+    case Format::exr: return "exr";
+    case Format::svg: return "svg";
+    case Format::pdf: return "pdf";
+  }
+  return "";
+}
+
+void write_figure_file(const FigureScene& fig, const std::string& path, Format format, const FigureFileOptions& o,
+                       std::optional<Image>& raster) {
+  if (o.dpi != 0 && !(o.dpi >= kMinDpi && o.dpi <= kMaxDpi)) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "dpi %g is outside [%g, %g]", o.dpi, kMinDpi, kMaxDpi);
+    throw std::invalid_argument(buf);
+  }
+  if (format == Format::svg || format == Format::pdf) {
     vector::Options v;
     v.dpi = (o.dpi > 0 ? o.dpi : 96.0) * o.scale;
     v.title = o.title;
     v.creator = o.software;
     v.date = o.date;
-    vector::write_vector(path, fig.scene, v);
+    vector::write_vector(path, fig.scene, format == Format::svg ? vector::VectorFormat::svg : vector::VectorFormat::pdf, v);
     return;
   }
-  if (format != "png" && format != "exr") throw UnwritableFile(path + ": unknown format '" + format + "'");
   if (!raster) raster = render::rasterize(fig.scene, o.threads);
   WriteOptions w;
   w.software = o.software;
   w.description = o.title;
   w.dpi = o.dpi > 0 ? o.dpi * o.scale : 0;
   w.date = o.date;
-  write_image(path, *raster, w);
+  write_image(path, *raster, format == Format::png ? ImageFormat::png : ImageFormat::exr, w);
 }
 
 long long source_date_epoch() {

@@ -82,7 +82,7 @@ void close_input(void* input) noexcept {
   if (in) in->close();
 }
 
-bool encode(const char* path, const CodecImage& im, std::vector<unsigned char>& file, std::string& error) noexcept {
+bool encode(const char* format, const CodecImage& im, std::vector<unsigned char>& file, std::string& error) noexcept {
   try {
     const OIIO::TypeDesc type = im.type == CodecType::f32   ? OIIO::TypeDesc::FLOAT
                                 : im.type == CodecType::u16 ? OIIO::TypeDesc::UINT16
@@ -95,7 +95,7 @@ bool encode(const char* path, const CodecImage& im, std::vector<unsigned char>& 
     for (const auto& [name, value] : im.string_attributes) spec.attribute(name, value);
     for (const auto& [name, value] : im.int_attributes) spec.attribute(name, value);
     for (const auto& [name, value] : im.float_attributes) spec.attribute(name, value);
-    auto out = OIIO::ImageOutput::create(path);
+    auto out = OIIO::ImageOutput::create(format);
     if (!out) {
       fail(error, OIIO::geterror());
       return false;
@@ -126,7 +126,8 @@ bool encode(const char* path, const CodecImage& im, std::vector<unsigned char>& 
         if (!name.empty()) ::unlink(name.c_str());
       }
     } remove_scratch{scratch};
-    if (!out->open(scratch.empty() ? std::string(path) : scratch, spec)) {
+    // In memory the name only labels the output; TIFF goes to its scratch file.
+    if (!out->open(scratch.empty() ? std::string("image.") + format : scratch, spec)) {
       fail(error, out->geterror());
       return false;
     }

@@ -53,8 +53,9 @@ struct ImageCodec {
   // values delivered are unassociated.
   bool (*read)(void* input, float* pixels, bool& straight, std::string& error);
   void (*close)(void* input);
-  // Encodes `image` into `file` in the format `path`'s extension names.
-  bool (*encode)(const char* path, const CodecImage& image, std::vector<unsigned char>& file, std::string& error);
+  // Encodes `image` into `file` in `format`: OpenImageIO's format name ("openexr", "tiff",
+  // "jpeg"; a file name's extension also names one).
+  bool (*encode)(const char* format, const CodecImage& image, std::vector<unsigned char>& file, std::string& error);
 };
 
 // The module's one exported symbol.

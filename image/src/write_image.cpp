@@ -2,6 +2,7 @@
 // (codec.hpp), and an atomic publication of the bytes (see io.hpp).
 #include <splinefig/image/io.hpp>
 #include <splinefig/image/srgb.hpp>
+#include <splinefig/base/extension.hpp>
 #include <splinefig/version.hpp>
 
 #include "one_line.hpp"
@@ -21,12 +22,6 @@ namespace splinefig {
 namespace {
 
 using detail::one_line;
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return ext;
-}
 
 [[noreturn]] void unwritable(const std::string& path, const std::string& why) {
   throw UnwritableImage(path + ": " + (why.empty() ? std::string("write failed") : why));
@@ -87,14 +82,28 @@ std::string exif_date(long long seconds) {
 
 }  // namespace
 
-void write_image(const std::string& path, const Image& im, const WriteOptions& options) {
+std::optional<ImageFormat> image_format_of(const std::string& path) {
   const std::string ext = lower_extension(path);
-  const bool png = ext == ".png";
-  const bool jpeg = ext == ".jpg" || ext == ".jpeg";
-  const bool tiff = ext == ".tif" || ext == ".tiff";
-  const bool floats = ext == ".exr" || (tiff && options.bits == 32);
-  if (!png && !jpeg && !tiff && !floats)
-    unwritable(path, "unsupported image format '" + ext + "' (use .png, .jpg, .tif or .exr)");
+  if (ext == "png") return ImageFormat::png;
+  if (ext == "jpg" || ext == "jpeg") return ImageFormat::jpeg;
+  if (ext == "tif" || ext == "tiff") return ImageFormat::tiff;
+  if (ext == "exr") return ImageFormat::exr;
+  return std::nullopt;
+}
+
+void write_image(const std::string& path, const Image& im, const WriteOptions& options) {
+  const auto format = image_format_of(path);
+  if (!format)
+    unwritable(path, "unsupported image format '." + lower_extension(path) + "' (use .png, .jpg, .tif or .exr)");
+  write_image(path, im, *format, options);
+}
+
+void write_image(const std::string& path, const Image& im, ImageFormat format, const WriteOptions& options) {
+  const bool png = format == ImageFormat::png;
+  const bool jpeg = format == ImageFormat::jpeg;
+  const bool tiff = format == ImageFormat::tiff;
+  const bool exr = format == ImageFormat::exr;
+  const bool floats = exr || (tiff && options.bits == 32);
   if (tiff && options.bits != 8 && options.bits != 16 && options.bits != 32)
     unwritable(path, "TIFF is written with 8 or 16 bits per channel or as float (32), not " + std::to_string(options.bits));
   if (jpeg && options.bits != 8) unwritable(path, "JPEG holds 8 bits per channel, not " + std::to_string(options.bits));
@@ -137,7 +146,7 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
   std::vector<std::uint16_t> words;
   if (floats) {
     text.emplace_back("oiio:ColorSpace", "Linear");
-    if (ext == ".exr") text.emplace_back("compression", "zip");
+    if (exr) text.emplace_back("compression", "zip");
     if (im.encoding == Encoding::linear) {
       spec.data = im.pixels.data();
     } else {
@@ -176,7 +185,8 @@ void write_image(const std::string& path, const Image& im, const WriteOptions& o
     } catch (const std::exception& e) {
       unwritable(path, e.what());
     }
-    if (!codec->encode(path.c_str(), spec, file, error)) unwritable(path, one_line(error));
+    const char* name = exr ? "openexr" : tiff ? "tiff" : "jpeg";
+    if (!codec->encode(name, spec, file, error)) unwritable(path, one_line(error));
   }
   try {
     write_file_atomically(path, file);

@@ -3,6 +3,7 @@
 #include "spec_error_check.hpp"
 #include <catch2/catch.hpp>
 
+#include <splinefig/figures/output.hpp>
 #include <splinefig/figures/spec.hpp>
 
 #include "support.hpp"
@@ -133,4 +134,18 @@ TEST_CASE("splinefig figures: unknown names and formats are errors") {
   CHECK(r.code != 0);
   CHECK(r.out.find("\"tiff\" is not png, exr, svg or pdf") != std::string::npos);
   CHECK_FALSE(figtest::fs::exists(dir / "cbasis.png"));
+}
+
+TEST_CASE("an output format is named once: by its name or a path's extension, in any case") {
+  namespace fig = splinefig::figures;
+  CHECK(fig::format_named("png") == fig::Format::png);
+  CHECK(fig::format_named("PDF") == fig::Format::pdf);
+  CHECK_FALSE(fig::format_named("tif"));
+  CHECK_FALSE(fig::format_named(""));
+  CHECK(fig::format_of_path("out/Fig.SVG") == fig::Format::svg);
+  CHECK(fig::format_of_path("a.b/fig.exr") == fig::Format::exr);
+  CHECK_FALSE(fig::format_of_path("a.png/fig"));
+  CHECK_FALSE(fig::format_of_path(".png"));  // a hidden file with no extension
+  for (fig::Format f : {fig::Format::png, fig::Format::exr, fig::Format::svg, fig::Format::pdf})
+    CHECK(fig::format_named(fig::extension(f)) == f);
 }

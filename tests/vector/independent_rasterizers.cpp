@@ -123,8 +123,8 @@ void check_every_figure(const std::string& tool, const std::string& format) {
     const fig::FigureScene f = fig::figure_scene(spec, 1);
     std::optional<Image> raster;
     const std::string png = (dir / (s.name + ".png")).string(), vec = (dir / (s.name + "." + format)).string();
-    fig::write_figure_file(f, png, "png", {}, raster);
-    fig::write_figure_file(f, vec, format, {}, raster);
+    fig::write_figure_file(f, png, fig::Format::png, {}, raster);
+    fig::write_figure_file(f, vec, *fig::format_named(format), {}, raster);
     RasterMask m(f.info.width, f.info.height);
     if (tool == "rsvg-convert") f.scene.visit(m);
     const Outcome r = compare(png, downsampled(peer_png(tool, vec, dir, s.name), f.info.width, f.info.height), &m.mask);
@@ -184,7 +184,7 @@ TEST_CASE("the tolerance rejects a figure without text, a curve half a pixel off
   const fig::FigureScene f = fig::figure_scene(spec, 1);
   std::optional<Image> raster;
   const std::string png = (dir / "cbasis.png").string();
-  fig::write_figure_file(f, png, "png", {}, raster);
+  fig::write_figure_file(f, png, fig::Format::png, {}, raster);
   auto outcome = [&](Altered& a, const std::string& stem) {
     f.scene.visit(a);
     const std::string svg = (dir / (stem + ".svg")).string();

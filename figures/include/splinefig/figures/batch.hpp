@@ -3,6 +3,7 @@
 // handed back in spec order (what `splinefig figures` does with the built-in specs).
 #include <splinefig/figures/catalog.hpp>
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/figures/output.hpp>
 
 #include <functional>
 #include <optional>
@@ -13,7 +14,7 @@ namespace splinefig::figures {
 
 struct BatchOptions {
   std::string out_dir;                       // must exist
-  std::vector<std::string> formats{"png"};   // file extensions: png, exr, svg, pdf (output.hpp)
+  std::vector<Format> formats{Format::png};  // each written as NAME.<extension(format)>
   double scale = 1;                          // output pixels per spec pixel
   int threads = 0;                           // <= 0: all hardware threads
   std::string software;                      // image metadata ("splinefig 1.2.3")

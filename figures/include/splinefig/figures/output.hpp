@@ -8,12 +8,16 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace splinefig::figures {
 
-// The formats, as file extensions.
-bool is_figure_format(const std::string& ext);  // png, exr, svg, pdf
-inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
+// The formats a figure is written in. A name ("png", any case) or a path's extension is read
+// into one once, where it is given (the command line); the writers take the value.
+enum class Format { png, exr, svg, pdf };
+std::optional<Format> format_named(std::string_view name);
+std::optional<Format> format_of_path(const std::string& path);  // by the extension
+const char* extension(Format format);                          // "png", "exr", "svg", "pdf"
 
 struct FigureFileOptions {
   double scale = 1;      // the scene's output pixels per spec pixel
@@ -24,10 +28,10 @@ struct FigureFileOptions {
   long long date = -1;   // PDF creation date (seconds since 1970), none when negative
 };
 
-// Writes `fig` to `path` as `format` (one of is_figure_format). `raster` caches the
-// rasterized scene between calls for the same figure (PNG and EXR share it). Throws
-// UnwritableFile naming the path.
-void write_figure_file(const FigureScene& fig, const std::string& path, const std::string& format,
+// Writes `fig` to `path` as `format`. `raster` caches the rasterized scene between calls for
+// the same figure (PNG and EXR share it). Throws UnwritableFile naming the path,
+// std::invalid_argument for a dpi outside [kMinDpi, kMaxDpi] (base/limits.hpp).
+void write_figure_file(const FigureScene& fig, const std::string& path, Format format,
                        const FigureFileOptions& options, std::optional<Image>& raster);
 
 // SOURCE_DATE_EPOCH as seconds, or -1 when it is unset or not a number.

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <optional>
 #include <string>
 
 namespace splinefig {
@@ -80,6 +81,12 @@ struct WriteOptions {
 //   .exr: float32, linear, associated alpha; sRGB images are decoded first.
 // Throws UnwritableImage (naming the path) for any other extension or any failure.
 void write_image(const std::string& path, const Image& im, const WriteOptions& options = {});
+
+// The formats write_image writes; the one a path's extension names (any case), if any.
+enum class ImageFormat { png, jpeg, tiff, exr };
+std::optional<ImageFormat> image_format_of(const std::string& path);
+// As write_image, in `format` whatever the path's extension.
+void write_image(const std::string& path, const Image& im, ImageFormat format, const WriteOptions& options = {});
 
 // Loads the image I/O module (OpenImageIO, see docs/image.md) now rather than at the first read
 // or write, e.g. on a thread that would otherwise wait while others render. Never throws: a

@@ -7,6 +7,7 @@
 // their own pixel size. See docs/vector.md.
 #include <splinefig/renderer/renderer.hpp>
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,7 +15,7 @@
 namespace splinefig::vector {
 
 struct Options {
-  // Pixels per inch of the scene's pixels: the physical size is width/dpi inches. 0: the CSS
+  // Pixels per inch of the scene's pixels (kMinDpi to kMaxDpi): the physical size is width/dpi inches. 0: the CSS
   // pixel (96 per inch). An SVG is width * 96 / dpi CSS px wide (its viewBox is the scene's
   // pixels), a PDF page width * 72 / dpi points.
   double dpi = 0;
@@ -25,21 +26,23 @@ struct Options {
   long long date = -1;
 };
 
-// The bounds of Options::dpi (0 aside).
-inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
-
 std::string to_svg(const render::Scene& scene, const Options& options = {});
 std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& options = {});
 
+enum class VectorFormat { svg, pdf };
+// The format a path's extension names (.svg or .pdf, any case), if any.
+std::optional<VectorFormat> vector_format_of(const std::string& path);
 // True for a path ending in .svg or .pdf (any case).
-bool is_vector_file(const std::string& path);
+inline bool is_vector_file(const std::string& path) { return vector_format_of(path).has_value(); }
 
 // Text as XML character data or a quoted attribute value (&, <, >, " escaped): for SVG, and
 // for the HTML that shows it.
 std::string xml_escape(std::string_view text);
 
-// Writes to_svg or to_pdf by the extension, atomically (image/atomic_file.hpp). Throws
-// UnwritableFile naming the path, std::invalid_argument for a dpi out of bounds.
+// Writes to_svg or to_pdf, atomically (image/atomic_file.hpp). Throws UnwritableFile naming the
+// path, std::invalid_argument for a dpi outside [kMinDpi, kMaxDpi] (base/limits.hpp).
+void write_vector(const std::string& path, const render::Scene& scene, VectorFormat format, const Options& options = {});
+// As above, in the format the extension names; UnwritableFile for another extension.
 void write_vector(const std::string& path, const render::Scene& scene, const Options& options = {});
 
 }  // namespace splinefig::vector
