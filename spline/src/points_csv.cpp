@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -18,10 +19,11 @@ std::string_view trim(std::string_view s) {
 }
 
 // Text for an error message, cut short, with control and non-ASCII bytes as \xNN.
+constexpr std::size_t kQuoted = 24;
 std::string quoted(std::string_view s) {
   // A char, not "'": GCC 12 warns of a bogus overlap (-Wrestrict, GCC PR 105329) for a
   // one-character string literal + a temporary std::string.
-  return '\'' + printable(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
+  return '\'' + printable(s.substr(0, kQuoted)) + (s.size() > kQuoted ? "...'" : "'");
 }
 
 std::string at(std::string_view source, std::size_t line) {
@@ -37,7 +39,12 @@ bool next_line(std::istream& in, std::string& line, std::string_view source, std
   std::streambuf* sb = in.rdbuf();
   bool any = false;
   for (;;) {
-    const int c = sb ? sb->sbumpc() : std::char_traits<char>::eof();
+    int c;
+    try {  // a file stream reports a failed read(2) (/proc/self/mem) by throwing
+      c = sb ? sb->sbumpc() : std::char_traits<char>::eof();
+    } catch (const std::exception&) {
+      throw CsvError(at(source, lineno) + ": a read error: the input is not a readable file", lineno);
+    }
     if (c == std::char_traits<char>::eof()) return any;
     any = true;
     if (c == '\n') return true;
@@ -139,10 +146,23 @@ Points read_csv_points(std::istream& in, std::string_view source, const CsvOptio
     for (std::size_t field = 1; field <= fields.size(); ++field) {
       double v = 0;
       std::string why;
-      if (!parse_csv_number(fields[field - 1], v, why))
+      if (!parse_csv_number(fields[field - 1], v, why)) {
+        // Before the first point nothing says the input is CSV: a file of another kind
+        // (/etc/shadow named as points_file) is not quoted. Text on stdin is what the user
+        // typed or piped, and is.
+        if (pts.dim == 0 && source != "stdin") {
+          const char* reasons[] = {"is empty", "is not a number", "is out of the range of a double", "is not a finite number"};
+          std::string reason = reasons[1];
+          for (const char* r : reasons)
+            if (why.ends_with(r)) reason = r;
+          throw CsvError(at(source, lineno) + ": not a CSV file (field " + std::to_string(field) +
+                             " of its first data line " + reason + ")",
+                         lineno);
+        }
         throw CsvError(at(source, lineno) + ", field " + std::to_string(field) + ": " +
                            (why == "is empty" ? "empty field" : why),
                        lineno);
+      }
       p.push_back(v);
     }
     const auto count = [](std::size_t n) { return std::to_string(n) + (n == 1 ? " coordinate" : " coordinates"); };

@@ -8,6 +8,10 @@
 //
 // Errors are CsvError with one line naming the source, line and field, e.g.
 //   "knots.csv line 7, field 2: 'abc' is not a number".
+// A value is quoted at most 24 bytes long, escaped (printable()). A file whose first data line
+// does not parse is "not a CSV file", quoting nothing of it: no line of a file that is not CSV
+// (a points_file = "/etc/shadow") reaches a message. A source named "stdin" is text the user
+// typed or piped, quoted from its first line on.
 #include <splinefig/spline/points.hpp>
 
 #include <cstddef>
