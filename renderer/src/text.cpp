@@ -305,12 +305,33 @@ const std::vector<Face*>& chain(Fonts& fonts, const TextStyle& style) {
   return chains[key] = std::move(faces);
 }
 
+// Refuses more than kMaxCombiningMarks marks (Mn, Mc, Me) in a row: Unicode's stream-safe
+// text format (UAX #15) allows 30 non-starters after a base, which covers every script, and
+// shaping a longer cluster takes time quadratic in its length (HarfBuzz attaches each mark
+// looking back over those before it; 200000 marks on one base took two minutes), and each
+// mark's outline is drawn over the same pixels.
+constexpr std::size_t kMaxCombiningMarks = 30;
+void check_clusters(const std::vector<CodePoint>& cps) {
+  hb_unicode_funcs_t* u = hb_unicode_funcs_get_default();
+  std::size_t run = 0;
+  for (const CodePoint& cp : cps) {
+    const hb_unicode_general_category_t g = hb_unicode_general_category(u, cp.c);
+    const bool mark = g == HB_UNICODE_GENERAL_CATEGORY_NON_SPACING_MARK || g == HB_UNICODE_GENERAL_CATEGORY_SPACING_MARK ||
+                      g == HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK;
+    run = mark ? run + 1 : 0;
+    if (run > kMaxCombiningMarks)
+      bad("text: more than " + std::to_string(kMaxCombiningMarks) + " combining marks in a row (" + code_name(cp.c) +
+          " at byte " + std::to_string(cp.byte) + " of the text; Unicode's stream-safe limit is 30)");
+  }
+}
+
 }  // namespace
 
 TextLayout layout_text(std::string_view text, const TextStyle& style) {
   TextLayout lay;
   const std::vector<CodePoint> cps = decode_utf8(text);
   if (cps.empty()) return lay;
+  check_clusters(cps);
   Fonts& fonts = Fonts::get();
   std::lock_guard<std::mutex> lock(fonts.mutex);
   const std::vector<Face*>& faces = chain(fonts, style);
