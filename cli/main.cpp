@@ -1,5 +1,6 @@
 // splinefig: the command line. Subcommands register themselves (command.hpp).
 #include "command.hpp"
+#include "parse_errors.hpp"
 
 #include <splinefig/version.hpp>
 
@@ -11,6 +12,7 @@
 #include <exception>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace splinefig::cli {
@@ -50,20 +52,50 @@ int main(int argc, char** argv) {
             [](const Command& a, const Command& b) { return a.name < b.name; });
   std::map<CLI::App*, Runner> runners;
   std::map<CLI::App*, std::string> names;
+  std::vector<std::string> command_names;
   for (auto& c : commands) {
     CLI::App* sub = app.add_subcommand(c.name, c.description);
     runners[sub] = c.setup(*sub);
     names[sub] = c.name;
+    command_names.push_back(c.name);
   }
-
-  if (argc > 1 && argv[1][0] != '-' &&
-      std::none_of(commands.begin(), commands.end(), [&](const Command& c) { return c.name == argv[1]; })) {
-    std::string known;
-    for (const auto& c : commands) known += (known.empty() ? "" : ", ") + c.name;
-    std::cerr << "splinefig: unknown command '" << printable(argv[1]) << "' (commands: " << known << "; see splinefig --help)\n";
+  const std::string commands_list = splinefig::or_list(command_names);
+  const auto fail = [](const std::string& who, const std::string& msg) {
+    std::cerr << who << ": " << msg << "\n";
     return 2;
+  };
+
+  // What comes before the command: the command itself, or splinefig's own --help and --version.
+  if (argc < 2) return fail("splinefig", "a command is required: " + commands_list + " (see splinefig --help)");
+  const std::string first = argv[1];
+  if (first.empty() || first[0] != '-') {
+    if (std::find(command_names.begin(), command_names.end(), first) == command_names.end()) {
+      const auto near = splinefig::near_misses(first, command_names);
+      return fail("splinefig", "unknown command '" + printable(first) + "' (" +
+                                   (near.empty() ? "" : "did you mean " + splinefig::or_list(near) + "? ") + "commands: " + commands_list +
+                                   "; see splinefig --help)");
+    }
+  } else {
+    const std::string flag = first.substr(0, first.find('='));
+    const auto own = flag_names(app);
+    if (std::find(own.begin(), own.end(), flag) == own.end()) {
+      auto near = near_flags(flag, own);
+      if (near.empty()) near = splinefig::near_misses(flag.substr(flag.find_first_not_of('-')), command_names);
+      return fail("splinefig", "unknown option " + printable(flag) + " (" +
+                                   (near.empty() ? "splinefig takes a command first: " + commands_list + "; see splinefig --help"
+                                                 : "did you mean " + splinefig::or_list(near) + "?") + ")");
+    }
   }
 
+  // The first argument a command was given and does not take (CLI11 keeps them in the order
+  // typed, also when it stops at another error), preferring a flag: the likeliest cause.
+  const auto extra = [](const CLI::App& sub) -> std::optional<std::string> {
+    const auto left = sub.remaining();
+    for (const auto& a : left)
+      if (a.size() > 1 && a[0] == '-') return a;
+    if (!left.empty()) return left.front();
+    return std::nullopt;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -73,10 +105,17 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return flushed(app.exit(e), "splinefig");
   } catch (const CLI::ParseError& e) {
-    std::string msg = e.what();
-    std::replace(msg.begin(), msg.end(), '\n', ' ');
-    std::cerr << "splinefig: " << printable(msg) << " (see splinefig --help)\n";
-    return 2;
+    const auto parsed = app.get_subcommands();
+    if (parsed.empty()) {
+      std::string msg = e.what();
+      std::replace(msg.begin(), msg.end(), '\n', ' ');
+      return fail("splinefig", printable(msg) + " (see splinefig --help)");
+    }
+    const CLI::App& sub = *parsed.front();
+    const std::string who = "splinefig " + sub.get_name();
+    if (const auto a = extra(sub)) return fail(who, extra_argument_message(app, sub, *a));
+    if (dynamic_cast<const CLI::RequiredError*>(&e)) return fail(who, missing_message(sub));
+    return fail(who, value_message(sub, e));
   }
 
   for (CLI::App* sub : app.get_subcommands()) {

@@ -1,6 +1,7 @@
 // The memo's basis matrices, its spec syntax, and the basis functions.
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/near_miss.hpp>
 
 #include <algorithm>
 #include <array>
@@ -111,13 +112,34 @@ Basis uniform_bspline(int n) {
 
 namespace {
 
+// One number: a decimal (from_chars' general format, a leading '+' allowed), or an exact
+// rational P/Q of integers (Q > 0), the double nearest P/Q (one rounding when |P|, |Q| <= 2^53),
+// as the docs write the defaults: mitchell-netravali:b=1/3,c=1/3.
 double parse_number(std::string_view name, std::string_view key, std::string_view text) {
+  const std::string what = std::string(name) + ": value of '" + std::string(key) + "' ";
+  const auto slash = text.find('/');
+  if (slash != std::string_view::npos) {
+    const auto integer = [](std::string_view t, bool sign) {
+      if (sign && !t.empty() && (t[0] == '+' || t[0] == '-')) t.remove_prefix(1);
+      return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    const std::string_view p = text.substr(0, slash), q = text.substr(slash + 1);
+    if (!integer(p, true) || !integer(q, false))
+      throw SpecError(what + "is not a number or a fraction P/Q of integers: '" + std::string(text) + "'");
+    const std::string_view ps = p[0] == '+' ? p.substr(1) : p;
+    double num = 0, den = 0;
+    std::from_chars(ps.data(), ps.data() + ps.size(), num);  // digits (after a '-'): cannot fail
+    std::from_chars(q.data(), q.data() + q.size(), den);
+    if (den == 0) throw SpecError(what + "divides by zero: '" + std::string(text) + "'");
+    const double v = num / den;
+    if (!std::isfinite(v)) throw SpecError(what + "is out of the range of a double: '" + std::string(text) + "'");
+    return v;
+  }
   double v = 0;
   const char* first = text.data();
   const char* last = text.data() + text.size();
   if (!text.empty() && *first == '+') ++first;
   auto [ptr, ec] = std::from_chars(first, last, v);
-  const std::string what = std::string(name) + ": value of '" + std::string(key) + "' ";
   if (!text.empty() && first != last && ec == std::errc::result_out_of_range && ptr == last)
     throw SpecError(what + "is out of the range of a double: '" + std::string(text) + "'");
   if (text.empty() || ec != std::errc() || ptr != last)
@@ -140,7 +162,9 @@ Basis finite_matrix(Basis b, std::string_view name, const std::string& given) {
 
 Basis parse_basis(std::string_view spec) {
   const auto colon = spec.find(':');
-  const std::string_view name = spec.substr(0, colon);
+  std::string_view name = spec.substr(0, colon);
+  // "mitchell", the name OpenImageIO and libvips give the filter, is mitchell-netravali.
+  if (name == "mitchell") name = "mitchell-netravali";
   std::map<std::string, double, std::less<>> params;
   std::map<std::string, std::string, std::less<>> raw;
   if (colon != std::string_view::npos) {
@@ -234,7 +258,9 @@ Basis parse_basis(std::string_view spec) {
     take({{"b", 1.0 / 3}, {"c", 1.0 / 3}});
     return mitchell_netravali_basis(params["b"], params["c"]);
   }
-  throw SpecError("unknown basis '" + std::string(name) + "' (known: " + known_bases() + ")");
+  const auto near = near_misses(name, split_names(known_bases()));
+  throw SpecError("unknown basis '" + std::string(name) + "' (" + (near.empty() ? "" : "did you mean " + or_list(near) + "? ") +
+                  "known: " + known_bases() + ")");
 }
 
 std::string known_bases() {

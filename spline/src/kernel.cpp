@@ -1,5 +1,6 @@
 // Basis functions as kernels, exactly from the matrix columns; the kernel spec parser.
 #include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/near_miss.hpp>
 
 #include <string>
 
@@ -25,9 +26,15 @@ Kernel parse_kernel(std::string_view spec) {
     return basis_kernel(parse_basis(spec));
   } catch (const SpecError& e) {
     const std::string what = e.what();
-    if (what.rfind("unknown basis", 0) == 0)
-      throw SpecError("unknown filter '" + std::string(spec.substr(0, spec.find(':'))) +
-                      "' (known: box, tent, lanczos3 and the bases " + known_bases() + ")");
+    if (what.rfind("unknown basis", 0) == 0) {
+      const std::string_view name = spec.substr(0, spec.find(':'));
+      auto known = split_names(known_bases());
+      known.insert(known.begin(), {"box", "tent", "lanczos3"});
+      const auto near = near_misses(name, known);
+      throw SpecError("unknown filter '" + std::string(name) + "' (" +
+                      (near.empty() ? "" : "did you mean " + or_list(near) + "? ") +
+                      "known: box, tent, lanczos3 and the bases " + known_bases() + ")");
+    }
     throw;
   }
 }

@@ -141,7 +141,7 @@ TEST_CASE("eval rejects bad flags and specs, naming the flag, key or value") {
   check_fails({"eval", "--basis", "catmull-rom", "--grain", "2.5"}, in, "--grain: '2.5' is not a whole number");
   check_fails({"eval", "--basis", "catmull-rom", "--grain"}, in, "--grain");
   check_fails({"eval", "--basis"}, in, "--basis");
-  check_fails({"eval"}, in, "--basis is required");
+  check_fails({"eval"}, in, "splinefig eval: missing --basis SPEC; usage: splinefig eval [INPUT] --basis SPEC [options]\n");
   check_fails({"eval", "--basis", "bogus"}, in, "unknown basis 'bogus'");
   check_fails({"eval", "--basis", "cardinal:tension=1"}, in, "unknown parameter 'tension'");
   check_fails({"eval", "--basis", "cardinal:a=nan"}, in, "not finite");
