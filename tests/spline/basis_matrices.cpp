@@ -70,6 +70,43 @@ TEST_CASE("Duff's B_a equals Barsky's B_{1, 12(1-a)/a}") {
   }
 }
 
+TEST_CASE("Beta-spline matrices with b1 != 1 derived from Barsky's definition in exact fractions") {
+  // Barsky's definition (the memo's Beta-spline section): the segment Q_i(u) = sum_{r=-2..1}
+  // V_{i+r} b_r(u) of cubics b_r, with Q_{i+1}(0) = Q_i(1), Q_{i+1}'(0) = b1 Q_i'(1) and
+  // Q_{i+1}''(0) = b1^2 Q_i''(1) + b2 Q_i'(1) for every polygon V, and sum_r b_r(u) = 1.
+  // The coefficient of each V_{i+r} gives 15 linear equations in the 16 coefficients, the
+  // partition of unity 4 more; solved exactly with Python's fractions (beta_derivation.py in
+  // this directory, which also checks that the solution is unique), not from the memo's
+  // printed matrix. Columns are b_{-2} .. b_1 (x[i-1] .. x[i+2]), rows u^3 .. 1. Every entry
+  // agrees with the memo's matrix over d = b2 + 2b1^3 + 4b1^2 + 4b1 + 2 (43, 33/4, 104, 515/54).
+  // Spot check by hand, b1 = 2, b2 = 1: row u, column x[i]: 6(b1^3 - b1)/d = 36/43; the
+  // constant row sums to (16 + 25 + 2)/43 = 1.
+  // Where b1 and the fractions' operands are doubles, beta() divides exactly representable
+  // numerators by d once, as the division of the fraction below does, so the doubles agree
+  // bit for bit; b1 = 2/3 is not a double and agrees to 1e-15.
+  const double b21[4][4] = {{-16.0 / 43, 30.0 / 43, -16.0 / 43, 2.0 / 43},
+                            {48.0 / 43, -75.0 / 43, 27.0 / 43, 0},
+                            {-48.0 / 43, 36.0 / 43, 12.0 / 43, 0},
+                            {16.0 / 43, 25.0 / 43, 2.0 / 43, 0}};
+  check_matrix(beta(2.0, 1.0), b21);
+  check_matrix(parse_basis("beta:b1=2,b2=1"), b21);
+  const double bhalf3[4][4] = {{-1.0 / 33, 31.0 / 33, -38.0 / 33, 8.0 / 33},
+                               {1.0 / 11, -15.0 / 11, 14.0 / 11, 0},
+                               {-1.0 / 11, -3.0 / 11, 4.0 / 11, 0},
+                               {1.0 / 33, 8.0 / 11, 8.0 / 33, 0}};
+  check_matrix(beta(0.5, 3.0), bhalf3);
+  const double b30[4][4] = {{-27.0 / 52, 3.0 / 4, -1.0 / 4, 1.0 / 52},
+                            {81.0 / 52, -27.0 / 13, 27.0 / 52, 0},
+                            {-81.0 / 52, 18.0 / 13, 9.0 / 52, 0},
+                            {27.0 / 52, 6.0 / 13, 1.0 / 52, 0}};
+  check_matrix(beta(3.0, 0.0), b30);
+  const double b23[4][4] = {{-32.0 / 515, 422.0 / 515, -498.0 / 515, 108.0 / 515},
+                            {96.0 / 515, -129.0 / 103, 549.0 / 515, 0},
+                            {-96.0 / 515, -24.0 / 103, 216.0 / 515, 0},
+                            {32.0 / 515, 75.0 / 103, 108.0 / 515, 0}};
+  check_matrix(beta(2.0 / 3, 2.5), b23, 1e-15);
+}
+
 TEST_CASE("Kernel values: Catmull-Rom k(0)=1 and min -2/27 at 4/3, B-spline 2/3 and 1/6") {
   const Basis c = catmull_rom(), b = bspline();
   CHECK(kernel(c, 0) == 1.0);
