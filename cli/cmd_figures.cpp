@@ -17,6 +17,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -90,24 +91,6 @@ std::vector<fig::SpecFile> selected(std::vector<fig::SpecFile> specs, const std:
   return specs;
 }
 
-// The index.json already in the output directory (none: empty). An unreadable one is
-// replaced, with a warning.
-std::vector<fig::FigureInfo> previous_index(const std::string& out) {
-  const fs::path path = fs::path(out) / "index.json";
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return {};
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  try {
-    return fig::read_index_json(text.str());
-  } catch (const std::exception& e) {
-    std::cerr << "splinefig figures: " << splinefig::cli::printable(path.string() + ": cannot read it (" + e.what() + ")")
-              << "; writing a new one with the figures rendered now\n";
-    return {};
-  }
-}
-
 // "  name      12.3 ms (CPU 11 ms)"
 std::string progress_line(const fig::BatchResult& r) {
   char buf[160];
@@ -141,15 +124,14 @@ int run(const FiguresArgs& a) {
     }
   });
   if (!done.empty()) {
-    std::vector<fig::FigureInfo> index = done;
-    if (!a.only.empty() || failed) {
-      std::vector<fig::FigureInfo> kept = previous_index(a.out);
-      if (a.only.empty())  // a whole run keeps, of the previous entries, only those that failed now
-        std::erase_if(kept, [&](const fig::FigureInfo& f) { return !failed_names.count(f.name); });
-      index = fig::merge_index(kept, done, specs, a.out);
-    }
-    fig::write_text_file((fs::path(a.out) / "index.json").string(), fig::index_json(index));
-    fig::write_text_file((fs::path(a.out) / "index.html").string(), fig::gallery_html(index, {SPLINEFIG_VERSION, options.date}));
+    // A run with --only keeps the previous entries of the figures it did not render; a whole
+    // run keeps, of the previous entries, only those that failed now.
+    std::function<bool(const fig::FigureInfo&)> keep;
+    if (!a.only.empty()) keep = [](const fig::FigureInfo&) { return true; };
+    else if (failed) keep = [&](const fig::FigureInfo& f) { return failed_names.count(f.name) > 0; };
+    fig::update_index(a.out, done, specs, keep, {SPLINEFIG_VERSION, options.date}, [](const std::string& why) {
+      std::cerr << "splinefig figures: " << splinefig::cli::printable(why) << "\n";
+    });
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;

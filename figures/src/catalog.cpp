@@ -7,8 +7,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +25,8 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <cstring>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -167,6 +176,84 @@ std::vector<FigureInfo> read_index_json(const std::string& text) {
   }
 }
 
+std::vector<FigureInfo> read_index_file(const std::string& dir, const std::function<void(const std::string&)>& warn) {
+  const std::string path = (fs::path(dir) / "index.json").string();
+  auto refuse = [&](const std::string& why) {
+    if (warn) warn(path + ": " + why + "; writing a new one with the figures rendered now");
+    return std::vector<FigureInfo>{};
+  };
+  // Opened without blocking (a FIFO put there must not stall the run) and checked on the
+  // descriptor, so that what is read is what was checked.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    if (errno == ENOENT) return {};
+    return refuse(std::string("cannot read it (") + std::strerror(errno) + ")");
+  }
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st{};
+  if (::fstat(fd, &st) != 0) return refuse(std::string("cannot read it (") + std::strerror(errno) + ")");
+  if (!S_ISREG(st.st_mode))
+    return refuse(S_ISDIR(st.st_mode) ? "a directory, not a file" : "not a regular file (a FIFO, socket or device)");
+  if (static_cast<unsigned long long>(st.st_size) > kMaxIndexBytes)
+    return refuse("has " + std::to_string(st.st_size) + " bytes, over the limit of 64 MiB");
+  std::string text;
+  char buf[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return refuse(std::string("cannot read it (") + std::strerror(errno) + ")");
+    if (n == 0) break;
+    text.append(buf, static_cast<std::size_t>(n));
+    if (text.size() > kMaxIndexBytes) return refuse("grew over the limit of 64 MiB while read");
+  }
+  try {
+    return read_index_json(text);
+  } catch (const std::exception& e) {
+    return refuse(std::string("not an index (") + e.what() + ")");
+  }
+}
+
+void update_index(const std::string& dir, const std::vector<FigureInfo>& rendered, const std::vector<SpecFile>& specs,
+                  const std::function<bool(const FigureInfo&)>& keep, const GalleryOptions& gallery,
+                  const std::function<void(const std::string&)>& warn) {
+  const std::string lock_path = (fs::path(dir) / ".index.lock").string();
+  const int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY, 0644);
+  if (fd < 0) throw std::runtime_error(lock_path + ": cannot open the index lock (" + std::strerror(errno) + ")");
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }  // releases the lock
+  } closer{fd};
+  // Another run merges in a few milliseconds; one that holds the lock for a minute is stuck.
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    if (errno != EWOULDBLOCK && errno != EINTR)
+      throw std::runtime_error(lock_path + ": cannot lock the index (" + std::strerror(errno) + ")");
+    if (std::chrono::steady_clock::now() > give_up)
+      throw std::runtime_error(lock_path + ": another process has held the index lock for 60 s");
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  std::vector<FigureInfo> index = rendered;
+  if (keep) {
+    std::vector<FigureInfo> kept = read_index_file(dir, warn);
+    std::erase_if(kept, [&](const FigureInfo& f) { return !keep(f); });
+    index = merge_index(kept, rendered, specs, dir);
+  }
+  write_text_file((fs::path(dir) / "index.json").string(), index_json(index));
+  write_text_file((fs::path(dir) / "index.html").string(), gallery_html(index, gallery));
+}
+
+bool plain_file_name(std::string_view name) {
+  if (name.empty() || name == "." || name == "..") return false;
+  for (const char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '/' || c == '\\' || c < 0x20 || c == 0x7f) return false;
+  }
+  return true;
+}
+
 std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, const std::vector<FigureInfo>& rendered,
                                     const std::vector<SpecFile>& specs, const std::string& dir) {
   auto named = [](const std::vector<FigureInfo>& list, const std::string& name) -> const FigureInfo* {
@@ -178,7 +265,7 @@ std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, con
     if (named(rendered, f.name)) return false;
     std::error_code ec;
     for (const auto& file : f.files)
-      if (!fs::is_regular_file(fs::path(dir) / file, ec)) return false;
+      if (!plain_file_name(file) || !fs::is_regular_file(fs::symlink_status(fs::path(dir) / file, ec))) return false;
     return !f.files.empty();
   };
   std::vector<FigureInfo> out;
@@ -196,15 +283,38 @@ std::vector<FigureInfo> merge_index(const std::vector<FigureInfo>& previous, con
   return out;
 }
 
+namespace {
+
+// Text for the page: control characters (a NUL, ESC, C1 controls; not tab and newline), which
+// HTML forbids and a terminal viewing the file would obey, as U+FFFD, then escaped.
+std::string html_text(std::string_view s) {
+  std::string clean;
+  clean.reserve(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    const bool c1 = c == 0xc2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(s[i + 1]) <= 0x9f;
+    if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7f || c1) {
+      clean += "\xef\xbf\xbd";
+      if (c1) ++i;
+    } else {
+      clean += s[i];
+    }
+  }
+  return vector::xml_escape(clean);
+}
+
+}  // namespace
+
 std::string markup_html(const std::string& markup) {
-  if (!detail::markup_problem(markup).empty()) return vector::xml_escape(markup);
+  if (!detail::markup_problem(markup).empty()) return html_text(markup);
   const double size = 10;
   const detail::RichText rt = detail::set_text(markup, size, [](const std::string& t, double, bool) {
     return render::TextExtent{static_cast<double>(t.size()), 1, 1};
   });
   std::string out;
   for (const detail::Run& r : rt.runs) {
-    std::string t = vector::xml_escape(r.text);
+    std::string t = html_text(r.text);
     if (r.italic) t = "<i>" + t + "</i>";
     if (r.size < size && r.dy > 0) t = "<sub>" + t + "</sub>";
     else if (r.size < size && r.dy < 0) t = "<sup>" + t + "</sup>";
@@ -225,24 +335,42 @@ std::string file_with(const FigureInfo& f, const std::string& ext) {
   return "";
 }
 
+// A file name of the directory as a relative URL: every byte but letters, digits and -._~
+// percent-encoded, so that '#', '?', '%', spaces and commas (srcset) stay part of the name.
+std::string file_url(std::string_view name) {
+  static constexpr char hex[] = "0123456789ABCDEF";
+  std::string out;
+  for (const char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') {
+      out += ch;
+    } else {
+      out += '%';
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
 void figure_html(std::ostringstream& o, const FigureInfo& f) {
   std::string png = file_with(f, ".png"), svg = file_with(f, ".svg");
   const std::string shown = png.empty() ? (svg.empty() ? (f.files.empty() ? "" : f.files.front()) : svg) : png;
   const bool natural = f.caption.find("at 1:1") != std::string::npos;
-  const std::string title = vector::xml_escape(f.title.empty() ? f.name : f.title);
-  o << "<figure id=\"" << vector::xml_escape(f.name) << "\"" << (natural ? " class=\"natural\"" : "") << ">\n  <div class=\"frame\"><a href=\""
-    << vector::xml_escape(shown) << "\"><img src=\"" << vector::xml_escape(shown) << "\"";
+  const std::string title = html_text(f.title.empty() ? f.name : f.title);
+  o << "<figure id=\"" << html_text(f.name) << "\"" << (natural ? " class=\"natural\"" : "") << ">\n  <div class=\"frame\"><a href=\""
+    << file_url(shown) << "\"><img src=\"" << file_url(shown) << "\"";
   // The vector file is the sharp source on high-density screens; a 1:1 figure keeps its pixels.
-  if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << vector::xml_escape(png) << " 1x, " << vector::xml_escape(svg) << " 2x\"";
+  if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << file_url(png) << " 1x, " << file_url(svg) << " 2x\"";
   o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << title << "\"></a></div>\n"
     << "  <figcaption><b>" << title << "</b> " << markup_html(f.caption) << "\n    <span class=\"files\">";
   for (const auto& file : f.files) {
     const auto dot = file.find_last_of('.');
     std::string label = dot == std::string::npos ? file : file.substr(dot + 1);
     std::transform(label.begin(), label.end(), label.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    o << "<a href=\"" << vector::xml_escape(file) << "\">" << vector::xml_escape(label) << "</a>";
+    o << "<a href=\"" << file_url(file) << "\">" << html_text(label) << "</a>";
   }
-  o << "<code>" << vector::xml_escape(f.name) << "</code></span></figcaption>\n</figure>\n";
+  o << "<code>" << html_text(f.name) << "</code></span></figcaption>\n</figure>\n";
 }
 
 }  // namespace
@@ -303,7 +431,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
     o << "</div>\n</section>\n";
   }
   o << "<footer>splinefig";
-  if (!options.version.empty()) o << " " << vector::xml_escape(options.version);
+  if (!options.version.empty()) o << " " << html_text(options.version);
   if (options.date >= 0) {
     const std::time_t t = static_cast<std::time_t>(options.date);
     std::tm tm{};
