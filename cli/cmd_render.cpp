@@ -2,6 +2,7 @@
 // figure spec (docs/spec.md) rendered to one file, the format chosen by the extension.
 #include "command.hpp"
 
+#include <splinefig/figures/batch.hpp>
 #include <splinefig/figures/figure.hpp>
 #include <splinefig/figures/output.hpp>
 #include <splinefig/image/io.hpp>
@@ -42,6 +43,7 @@ const splinefig::cli::Registration reg{
         const double dpi = splinefig::cli::check_dpi(a->dpi);
         try {
           fig::FigureSpec spec = fig::load_spec(a->spec);
+          if (std::string bad = fig::output_over_input({a->out}, {a->spec}); !bad.empty()) throw Failure("-o " + bad + " (write to another file)");
           fig::check_scaled_canvas(spec, a->scale, "--scale");
           const fig::FigureScene f = fig::figure_scene(spec, a->scale);
           fig::FigureFileOptions w;

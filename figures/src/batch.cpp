@@ -2,16 +2,22 @@
 #include <splinefig/figures/batch.hpp>
 #include <splinefig/base/parallel.hpp>
 #include <splinefig/figures/output.hpp>
+#include <splinefig/image/atomic_file.hpp>
 #include <splinefig/image/io.hpp>
 
+#include "toml_reader.hpp"
+
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <mutex>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace splinefig::figures {
 namespace {
@@ -71,12 +77,91 @@ bool needs_image_io(const std::vector<SpecFile>& specs, const BatchOptions& o) {
   return false;
 }
 
+// The spec's text by load_spec's rules (a regular file of at most kMaxSpecBytes), or nothing.
+std::optional<std::string> spec_text(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.find('\0') != std::string::npos || !fs::is_regular_file(path, ec)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string text;
+  std::array<char, 1 << 16> buf;
+  while (in.read(buf.data(), buf.size()) || in.gcount() > 0) {
+    text.append(buf.data(), static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kMaxSpecBytes) return std::nullopt;
+  }
+  if (in.bad()) return std::nullopt;
+  return text;
+}
+
+bool names_a_file(std::string_view key) { return key == "file" || (key.size() > 5 && key.ends_with("_file")); }
+
+void collect_inputs(const toml::node& node, const std::string& key, const std::string& spec,
+                    const std::filesystem::path& base, std::vector<SpecInput>& out) {
+  if (const toml::table* t = node.as_table()) {
+    for (const auto& [k, v] : *t) {
+      const std::string name(k.str());
+      const std::string path = key.empty() ? name : key + "." + name;
+      if (const auto* s = v.as_string(); s && names_a_file(name) && !s->get().empty()) {
+        std::filesystem::path p(s->get());
+        if (p.is_relative()) p = base / p;
+        out.push_back({p.string(), detail::line_of(spec, v.source()) + ": " + path + " = \"" + s->get() + "\""});
+      } else {
+        collect_inputs(v, path, spec, base, out);
+      }
+    }
+  } else if (const toml::array* a = node.as_array()) {
+    for (const auto& v : *a) collect_inputs(v, key, spec, base, out);
+  }
+}
+
 }  // namespace
+
+std::vector<SpecInput> spec_inputs(const std::string& spec_path) {
+  std::vector<SpecInput> out;
+  const auto text = spec_text(spec_path);
+  if (!text) return out;
+  // The same checks as load_spec before the parser sees the text (key depth: its stack).
+  if (!detail::utf8_problem(*text, spec_path).empty() || !detail::key_depth_problem(*text, spec_path).empty()) return out;
+  toml::table doc;
+  try {
+    doc = toml::parse(*text, spec_path);
+  } catch (const toml::parse_error&) {
+    return out;
+  }
+  const std::string dir = std::filesystem::path(spec_path).parent_path().string();
+  collect_inputs(doc, "", spec_path, dir.empty() ? "." : dir, out);
+  return out;
+}
+
+std::string output_over_input(const std::vector<std::string>& outputs, const std::vector<std::string>& specs) {
+  for (const std::string& spec : specs) {
+    std::vector<SpecInput> inputs = spec_inputs(spec);
+    inputs.insert(inputs.begin(), SpecInput{spec, "the spec " + spec});
+    for (const std::string& out : outputs)
+      for (const SpecInput& in : inputs)
+        if (same_file(out, in.path)) return out + ": it is " + in.where + ", an input";
+  }
+  return {};
+}
 
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
                   const std::function<void(BatchResult&)>& done) {
   const int workers = static_cast<int>(std::min<std::size_t>(specs.size(), static_cast<std::size_t>(worker_count(options.threads))));
   const int raster_threads = workers > 1 ? 1 : options.threads;
+  // No output may replace a file a spec reads (its image and data files, the specs themselves),
+  // nor index.json and index.html: all refused before anything is rendered or written.
+  {
+    std::vector<std::string> outputs, paths;
+    for (const SpecFile& s : specs) {
+      paths.push_back(s.path);
+      for (const auto& format : options.formats)
+        outputs.push_back((std::filesystem::path(options.out_dir) / (s.name + "." + extension(format))).string());
+    }
+    for (const char* index : {"index.json", "index.html"}) outputs.push_back((std::filesystem::path(options.out_dir) / index).string());
+    if (std::string bad = output_over_input(outputs, paths); !bad.empty())
+      throw std::runtime_error(bad + " (render into another --out)");
+  }
   // The image I/O module first, if the batch may use it: a library it loads starts threads of its
   // own when loaded, and under a thread limit those must not find the budget taken by the workers.
   if (needs_image_io(specs, options)) preload_image_io();

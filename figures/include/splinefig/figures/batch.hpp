@@ -37,7 +37,23 @@ struct BatchResult {
 // (from whichever thread completed the result, with the batch's lock held: keep it short), as
 // soon as the results before it are in. If `done` throws, no further figure is started and the
 // exception is rethrown here once the figures under way have finished.
+// Before anything is rendered, throws std::runtime_error (one line) if an output would replace
+// an input: output_over_input of every NAME.<format> and of index.json and index.html.
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
                   const std::function<void(BatchResult&)>& done);
+
+// A file a spec reads: the string of a `file` or `KEY_file` key (an image, a points_file, a
+// knots_file) at any depth, resolved as load_spec resolves it, against the spec's directory.
+struct SpecInput {
+  std::string path;   // as resolved
+  std::string where;  // "FILE:LINE: image.file = \"pic.png\""
+};
+// Every file the spec at `spec_path` names; none for a spec load_spec would refuse to read or
+// parse (its own error comes from there).
+std::vector<SpecInput> spec_inputs(const std::string& spec_path);
+// Whether an output path is an input, by any spelling, symbolic or hard link (same_file): one
+// of the specs or a file one of them names. "OUT: it is FILE:LINE: image.file = \"pic.png\", an
+// input" for the first such output, else empty.
+std::string output_over_input(const std::vector<std::string>& outputs, const std::vector<std::string>& specs);
 
 }  // namespace splinefig::figures
