@@ -352,12 +352,17 @@ class Scene:
     exactly (area coverage, or a spline pixel filter) into linear-light RGBA. Colours are
     "#rrggbb[aa]" (sRGB) or 3 or 4 linear-light floats with straight alpha."""
 
-    def __init__(self, width: int, height: int, *, background: Any = (1.0, 1.0, 1.0, 1.0), filter: Any = "box") -> None:
+    def __init__(self, width: int, height: int, *, background: Any = (1.0, 1.0, 1.0, 1.0), filter: Any = "box",
+                 blend: str = "linear") -> None:
+        """blend: "linear" (light, the default) or "srgb" (the encoded values blended, as AGG and
+        browsers do; render() then returns sRGB-encoded associated-alpha values)."""
         w = _int(width, "width", 1, 32768)
         h = _int(height, "height", 1, 32768)
         if w * h > (1 << 28):
             raise ValueError(f"width, height: {w}x{h} is more than 2^28 pixels")
+        b = _choice(blend, "blend", ("linear", "srgb"))
         self._s = _library("filter", _core.Scene, w, h, _color(background, "background"), _kernel(filter, "filter"))
+        self._s.blend = b
         # render() runs without the interpreter's lock: adding items meanwhile from another
         # thread waits for it instead of changing the display list under the rasterizer.
         self._lock = threading.Lock()
@@ -369,6 +374,82 @@ class Scene:
     @property
     def height(self) -> int:
         return self._s.height
+
+    @property
+    def blend(self) -> str:
+        """The blend space: "linear" or "srgb"."""
+        return self._s.blend
+
+    @staticmethod
+    def _path_args(vertices: Any, codes: Any) -> tuple:
+        v = _points(vertices, "vertices", 2)
+        if v.shape[1] != 2:
+            raise ValueError(f"vertices: expected an (n, 2) array, got shape {v.shape}")
+        if codes is None:
+            c = np.zeros(0, np.uint8)
+        else:
+            c = _numeric(codes, "codes", np.int64).ravel()
+            if c.size != v.shape[0]:
+                raise ValueError(f"codes: {c.size} codes for {v.shape[0]} vertices")
+            if c.size and (c.min() < 0 or c.max() > 255):
+                raise ValueError("codes: a code outside 0..255")
+            c = c.astype(np.uint8)
+        return v, c
+
+    def fill_path(self, vertices: Any, codes: Any = None, *, color: Any = "#000000", rule: str = "nonzero") -> "Scene":
+        """Fills a path of lines and Bezier curves: (n, 2) vertices with matplotlib's path codes
+        (1 move, 2 line, 3 quadratic: control then end, 4 cubic: two controls then end,
+        79 close, 0 stop; None: one polyline), kept exact until the rasterizer flattens it
+        within 1e-4 px."""
+        v, c = self._path_args(vertices, codes)
+        r, col = _choice(rule, "rule", ("nonzero", "evenodd")), _color(color, "color")
+        with self._lock:
+            _library("codes", self._s.fill_path, v, c, r, col)
+        return self
+
+    def stroke_path(self, vertices: Any, codes: Any = None, *, color: Any = "#000000", width: float = 1.0,
+                    join: str = "miter", cap: str = "butt", miter_limit: float = 4.0,
+                    dashes: Sequence[float] = (), dash_offset: float = 0.0) -> "Scene":
+        """Strokes a path (vertices and codes as fill_path) as the union of its pieces."""
+        v, c = self._path_args(vertices, codes)
+        wd = _real(width, "width")
+        if wd <= 0:
+            raise ValueError(f"width: {wd} is not positive")
+        ml = _real(miter_limit, "miter_limit")
+        if ml < 1:
+            raise ValueError(f"miter_limit: {ml} is less than 1")
+        ds = [_real(d, "dashes") for d in dashes]
+        if any(d < 0 for d in ds) or (ds and sum(ds) <= 0):
+            raise ValueError("dashes: lengths must be >= 0 with a positive sum")
+        args = (v, c, _color(color, "color"), wd, _choice(join, "join", ("miter", "round", "bevel")),
+                _choice(cap, "cap", ("butt", "round", "square")), ml, ds, _real(dash_offset, "dash_offset"))
+        with self._lock:
+            _library("dashes", self._s.stroke_path, *args)
+        return self
+
+    def image(self, rgba: Any, p0: Any, p1: Any, *, sampling: str = "nearest") -> "Scene":
+        """Draws an (h, w, 4) RGBA image into the rectangle with corners p0 and p1: uint8 is
+        sRGB with straight alpha (as matplotlib and PIL hold it), float32 linear light with
+        associated alpha (as render() gives in linear blend space). A canvas pixel whose centre
+        is inside samples the image there ("nearest" or "bilinear")."""
+        a = np.asarray(rgba) if not isinstance(rgba, (str, bytes)) else None
+        if a is None or a.dtype not in (np.uint8, np.float32, np.float64):
+            raise TypeError(f"rgba: expected a uint8 or float32 array, got {type(rgba).__name__ if a is None else a.dtype}")
+        if a.ndim != 3 or a.shape[2] != 4 or a.shape[0] < 1 or a.shape[1] < 1:
+            raise ValueError(f"rgba: expected an (h, w, 4) array, got shape {a.shape}")
+        a = np.ascontiguousarray(a, dtype=np.uint8 if a.dtype == np.uint8 else np.float32)
+        if a.dtype == np.float32 and not np.isfinite(a).all():
+            raise ValueError("rgba: contains a value that is not finite")
+        corners = []
+        for name, p in (("p0", p0), ("p1", p1)):
+            q = _numeric(p, name, np.float64).ravel()
+            if q.size != 2 or not np.isfinite(q).all():
+                raise ValueError(f"{name}: expected 2 finite coordinates")
+            corners.append(q)
+        smp = _choice(sampling, "sampling", ("nearest", "bilinear"))
+        with self._lock:
+            _library("rgba", self._s.image, a, corners[0][0], corners[0][1], corners[1][0], corners[1][1], smp)
+        return self
 
     def polyline(self, points: Any, *, color: Any = "#000000", width: float = 1.0, closed: bool = False,
                  join: str = "miter", cap: str = "butt", miter_limit: float = 4.0,
@@ -458,14 +539,28 @@ class Scene:
         return self
 
     def render(self, *, threads: int = 0) -> np.ndarray:
-        """The picture: an (h, w, 4) float32 array, linear light, associated alpha."""
+        """The picture: an (h, w, 4) float32 array, associated alpha, linear light (or
+        sRGB-encoded values for blend="srgb")."""
         t = _int(threads, "threads", 0, 256)
         with self._lock:
             return self._s.render(t)
 
+    def render_rgba8(self, *, threads: int = 0, clear: Sequence[int] = (255, 255, 255)) -> np.ndarray:
+        """The picture as an (h, w, 4) uint8 array, sRGB with straight alpha (a PNG's or
+        matplotlib's buffer); a pixel of alpha 0 gets the colour `clear`."""
+        t = _int(threads, "threads", 0, 256)
+        cl = [_int(v, "clear", 0, 255) for v in clear]
+        if len(cl) != 3:
+            raise ValueError(f"clear: expected 3 channel values, got {len(cl)}")
+        with self._lock:
+            return self._s.render_rgba8(t, cl)
+
     def save(self, path: _PathLike, *, threads: int = 0) -> None:
         """Renders and writes .png (8-bit sRGB) or .exr (float linear)."""
-        write_image(path, self.render(threads=threads))
+        im = self.render(threads=threads)
+        if self.blend == "srgb":
+            im = _core.srgb_to_linear_rgba(im)
+        write_image(path, im)
 
 
 def _path(value: Any, name: str) -> str:

@@ -4,12 +4,17 @@
 
 #include <splinefig/figures/figure.hpp>
 #include <splinefig/figures/spec.hpp>
+#include <splinefig/image/srgb.hpp>
+#include <splinefig/renderer/path.hpp>
 #include <splinefig/renderer/renderer.hpp>
 #include <splinefig/spline/kernel.hpp>
 
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory>
 
 namespace splinefig::python {
 namespace {
@@ -48,6 +53,93 @@ render::StrokeStyle stroke_of(double width, const std::string& join, const std::
   return s;
 }
 
+using u8array = py::array_t<std::uint8_t, py::array::c_style>;
+
+// A matplotlib-style path: (n, 2) vertices and n codes (0 stop, 1 move, 2 line, 3 quadratic
+// Bezier: this vertex is the control point, the next the end, 4 cubic: this and the next are
+// the controls, the third the end, 79 close; an empty code array: a polyline). A curve that
+// runs past the end or lacks a start point throws, naming the vertex.
+render::Path path_of(const f64array& vertices, const u8array& codes) {
+  const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
+  const double* v = vertices.data();
+  const std::uint8_t* c = codes.size() ? codes.data() : nullptr;
+  if (c && static_cast<std::size_t>(codes.size()) != n)
+    throw std::invalid_argument("codes: " + std::to_string(codes.size()) + " codes for " + std::to_string(n) + " vertices");
+  render::Path path;
+  bool started = false;
+  auto at = [&](std::size_t i) { return Vec2{v[2 * i], v[2 * i + 1]}; };
+  for (std::size_t i = 0; i < n;) {
+    const int code = c ? c[i] : (i == 0 ? 1 : 2);
+    if (code == 0) break;
+    if (code == 79) {
+      if (started) path.close();
+      ++i;
+      continue;
+    }
+    if (code == 1 || (!started && code == 2)) {
+      path.move_to(at(i));
+      started = true;
+      ++i;
+      continue;
+    }
+    const std::size_t need = code == 2 ? 1 : code == 3 ? 2 : code == 4 ? 3 : 0;
+    if (need == 0) throw std::invalid_argument("codes: unknown path code " + std::to_string(code) + " at vertex " + std::to_string(i));
+    if (!started) throw std::invalid_argument("codes: a curve with no start point at vertex " + std::to_string(i));
+    if (i + need > n) throw std::invalid_argument("codes: the curve at vertex " + std::to_string(i) + " runs past the last vertex");
+    if (code == 2) path.line_to(at(i));
+    else if (code == 3) path.quad_to(at(i), at(i + 1));
+    else path.cubic_to(at(i), at(i + 1), at(i + 2));
+    i += need;
+  }
+  return path;
+}
+
+// An (h, w, 4) RGBA array as the linear, associated-alpha image Scene::image takes: uint8 codes
+// are sRGB with straight alpha (as matplotlib's images), decoded by the library's table; float32
+// is taken as given (already linear and associated).
+std::shared_ptr<const Image> rgba_image(const py::array& a) {
+  const int h = static_cast<int>(a.shape(0)), w = static_cast<int>(a.shape(1));
+  if (py::isinstance<py::array_t<std::uint8_t>>(a)) {
+    const auto u = u8array::ensure(a);
+    auto im = std::make_shared<Image>(w, h, 4);
+    const std::uint8_t* s = u.data();
+    float* d = im->pixels.data();
+    const std::size_t count = static_cast<std::size_t>(w) * h;
+    for (std::size_t i = 0; i < count; ++i, s += 4, d += 4) {
+      const float alpha = s[3] / 255.0f;
+      for (int ch = 0; ch < 3; ++ch) d[ch] = srgb8_to_linear(s[ch]) * alpha;
+      d[3] = alpha;
+    }
+    return im;
+  }
+  return std::make_shared<Image>(image_from_array(f32array::ensure(a)));
+}
+
+// The rasterized canvas (associated alpha, linear or sRGB-encoded) as 8-bit sRGB with straight
+// alpha, rows top to bottom: what PNG files and matplotlib's buffers hold. A pixel of alpha 0
+// becomes `clear` (r, g, b, 0).
+py::array rgba8_of(const Image& im, std::array<std::uint8_t, 3> clear) {
+  const std::size_t count = im.pixel_count();
+  std::vector<std::uint8_t> out(count * 4);
+  const float* s = im.pixels.data();
+  const bool srgb = im.encoding == Encoding::srgb;
+  for (std::size_t i = 0; i < count; ++i, s += 4) {
+    std::uint8_t* d = &out[4 * i];
+    const float a = std::clamp(s[3], 0.0f, 1.0f);
+    const long a8 = std::lround(a * 255.0f);
+    if (a8 == 0) {
+      d[0] = clear[0], d[1] = clear[1], d[2] = clear[2], d[3] = 0;
+      continue;
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+      const float v = s[ch] / a;
+      d[ch] = srgb ? static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)) : linear_to_srgb8(v);
+    }
+    d[3] = static_cast<std::uint8_t>(a8);
+  }
+  return array_owning<std::uint8_t>(std::move(out), {im.height, im.width, 4});
+}
+
 py::array figure_array(const figures::FigureSpec& spec, double scale, int threads) {
   figures::RenderOptions o;
   o.scale = scale;
@@ -84,6 +176,24 @@ void bind_render(py::module_& m) {
         return render::Scene(w, h, color_of(bg), filter);
       }))
       .def_property_readonly("width", &render::Scene::width)
+      .def_property("blend", [](const render::Scene& s) { return std::string(s.blend_space() == render::BlendSpace::srgb ? "srgb" : "linear"); },
+                    [](render::Scene& s, const std::string& b) {
+                      s.set_blend_space(pick<render::BlendSpace>(b, "blend", {{"linear", render::BlendSpace::linear}, {"srgb", render::BlendSpace::srgb}}));
+                    })
+      .def("fill_path", [](render::Scene& s, const f64array& vertices, const u8array& codes, const std::string& rule, const std::array<float, 4>& color) {
+        s.fill_path(path_of(vertices, codes),
+                    pick<render::FillRule>(rule, "rule", {{"nonzero", render::FillRule::NonZero}, {"evenodd", render::FillRule::EvenOdd}}),
+                    color_of(color));
+      })
+      .def("stroke_path", [](render::Scene& s, const f64array& vertices, const u8array& codes, const std::array<float, 4>& color, double width,
+                             const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes, double dash_offset) {
+        s.stroke_path(path_of(vertices, codes), stroke_of(width, join, cap, miter_limit, std::move(dashes), dash_offset), color_of(color));
+      })
+      .def("image", [](render::Scene& s, const py::array& rgba, double x0, double y0, double x1, double y1, const std::string& sampling) {
+        const auto smp = pick<render::Scene::Sampling>(sampling, "sampling", {{"nearest", render::Scene::Sampling::Nearest},
+                                                                              {"bilinear", render::Scene::Sampling::Bilinear}});
+        s.image(rgba_image(rgba), {x0, y0}, {x1, y1}, smp);
+      })
       .def_property_readonly("height", &render::Scene::height)
       .def("polyline", [](render::Scene& s, const f64array& pts, bool closed, const std::array<float, 4>& color, double width,
                           const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes,
@@ -131,7 +241,25 @@ void bind_render(py::module_& m) {
           im = render::rasterize(s, threads);
         }
         return array_from_image(std::move(im));
+      })
+      .def("render_rgba8", [](const render::Scene& s, int threads, const std::array<std::uint8_t, 3>& clear) {
+        Image im;
+        {
+          py::gil_scoped_release unlocked;
+          im = render::rasterize(s, threads);
+        }
+        return rgba8_of(im, clear);
       });
+  // An sRGB-encoded associated-alpha RGBA array (what rasterize gives in sRGB blend space) as
+  // linear light, associated (what Scene::image takes), by the library's curve.
+  m.def("srgb_to_linear_rgba", [](const f32array& a) {
+    Image im = image_from_array(a, Encoding::srgb);
+    {
+      py::gil_scoped_release unlocked;
+      im = to_linear(im);
+    }
+    return array_from_image(std::move(im));
+  });
 
   m.def("render_spec_file", [](const std::string& path, double scale, int threads) {
     return spec_errors([&] { return figure_array(figures::load_spec(path), scale, threads); });
