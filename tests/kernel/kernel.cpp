@@ -1,12 +1,13 @@
 // The kernel type: evaluation on half-open unit pieces, exact piece choice at the knots, the
-// comparison filters, derivatives and integrals, against values derived here and against the
-// spline core's own evaluation of the basis matrices.
+// comparison filters, derivatives and integrals, against values derived here (closed forms,
+// hand-entered and exactly derived matrices), never against the spline core's own evaluation.
 #include <catch2/catch.hpp>
 
 #include <splinefig/kernel/analysis.hpp>
 #include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 
 using namespace splinefig;
@@ -61,27 +62,112 @@ TEST_CASE("a piecewise kernel picks its piece by exact comparison at every knot"
   CHECK(h(0.5) == 3);
 }
 
-TEST_CASE("basis kernels are the matrix columns of the kernel convention, bit for bit") {
-  // k(s) = c_col(s - (h - col)) with col = h - floor(s), h = (n-1)/2, c_i(u) = [u^n .. 1] M column i
-  // (basis_segment): the memo's convention, evaluated column by column.
-  for (const char* spec : {"catmull-rom", "bspline", "cardinal:a=0.25", "tensioned-bspline:a=0.5", "beta:b1=2,b2=1",
-                           "uniform-bspline:degree=2", "uniform-bspline:degree=5", "mitchell-netravali"}) {
-    INFO(spec);
-    const Basis b = parse_basis(spec);
-    const Kernel k = parse_kernel(spec);
-    const int n = b.degree, h = (n - 1) / 2;
-    CHECK(k.name() == b.spec);
+TEST_CASE("basis kernels against closed forms and hand-entered matrices at every 1/64") {
+  // Each kernel against values computed here without the spline library: the published
+  // piecewise formulas (Keys' form of the cardinal family, Mitchell and Netravali 1988), the
+  // memo's B_a written out, the uniform B-spline as truncated powers in integers, and the
+  // Beta-spline matrix for b1 = 2, b2 = 1 derived from Barsky's joint conditions in exact
+  // fractions (tests/spline/beta_derivation.py) read through the kernel convention:
+  // k(s) = c_3(s + 2) on [-2, -1), c_2(s + 1) on [-1, 0), c_1(s) on [0, 1), c_0(s - 1) on [1, 2],
+  // with c_i(u) = [u^3 u^2 u 1] M column i. That kernel is asymmetric, so a mirrored or shifted
+  // column order shows.
+  const auto cardinal_form = [](double a) {
+    return [a](double s) {
+      const double x = std::abs(s);
+      return x < 1 ? (2 - a) * x * x * x - (3 - a) * x * x + 1 : x < 2 ? -a * x * x * x + 5 * a * x * x - 8 * a * x + 4 * a : 0.0;
+    };
+  };
+  const auto tensioned_form = [](double a) {  // the memo's B_a, columns 1 and 0
+    return [a](double s) {
+      const double x = std::abs(s);
+      return x < 1 ? ((12 - 9 * a) * x * x * x + (12 * a - 18) * x * x + 6 - 2 * a) / 6
+                   : x < 2 ? a * (2 - x) * (2 - x) * (2 - x) / 6 : 0.0;
+    };
+  };
+  const auto mitchell_form = [](double B, double C) {
+    return [B, C](double s) {
+      const double x = std::abs(s);
+      if (x < 1) return ((12 - 9 * B - 6 * C) * x * x * x + (-18 + 12 * B + 6 * C) * x * x + (6 - 2 * B)) / 6;
+      if (x < 2)
+        return ((-B - 6 * C) * x * x * x + (6 * B + 30 * C) * x * x + (-12 * B - 48 * C) * x + (8 * B + 24 * C)) / 6;
+      return 0.0;
+    };
+  };
+  // N_n(x) = 1/n! sum_{k=0}^{n+1} (-1)^k C(n+1, k) (x - k)_+^n on [0, n + 1], for x = m/64
+  // summed exactly in integers (scaled by 64^n) and divided once. The kernel of degree n is
+  // N_n(s + n - h), h = (n - 1)/2 (its support is [h - n, h + 1]).
+  const auto uniform_form = [](int n) {
+    return [n](double s) {
+      const int h = (n - 1) / 2;
+      const long long m = std::llround((s + n - h) * 64);
+      long long sum = 0, binom = 1, fact = 1, scale = 1;
+      for (int k = 0; k <= n + 1; ++k) {
+        const long long t = m - 64LL * k;
+        if (t > 0) {
+          long long p = 1;
+          for (int e = 0; e < n; ++e) p *= t;
+          sum += (k % 2 ? -1 : 1) * binom * p;
+        }
+        binom = binom * (n + 1 - k) / (k + 1);
+      }
+      for (int t = 2; t <= n; ++t) fact *= t;
+      for (int e = 0; e < n; ++e) scale *= 64;
+      return m <= 0 || m >= 64LL * (n + 1) ? 0.0 : double(sum) / (double(fact) * double(scale));
+    };
+  };
+  const double beta21[4][4] = {{-16.0 / 43, 30.0 / 43, -16.0 / 43, 2.0 / 43},
+                               {48.0 / 43, -75.0 / 43, 27.0 / 43, 0},
+                               {-48.0 / 43, 36.0 / 43, 12.0 / 43, 0},
+                               {16.0 / 43, 25.0 / 43, 2.0 / 43, 0}};
+  const auto beta_form = [&beta21](double s) {
+    if (s < -2 || s >= 2) return 0.0;
+    const int col = 1 - static_cast<int>(std::floor(s));  // [-2, -1) -> 3, ..., [1, 2) -> 0
+    const double u = s - (1 - col);
+    double v = 0;
+    for (int r = 0; r < 4; ++r) v = v * u + beta21[r][col];
+    return v;
+  };
+  struct Case {
+    const char* spec;
+    std::function<double(double)> form;
+    const char* name = nullptr;  // the canonical spec, when not `spec` itself
+  };
+  const Case cases[] = {{"catmull-rom", cardinal_form(0.5)},
+                        {"cardinal:a=0.25", cardinal_form(0.25)},
+                        {"bspline", tensioned_form(1.0)},
+                        {"tensioned-bspline:a=0.5", tensioned_form(0.5)},
+                        {"mitchell-netravali", mitchell_form(1.0 / 3, 1.0 / 3),
+                         "mitchell-netravali:b=0.3333333333333333,c=0.3333333333333333"},
+                        {"beta:b1=2,b2=1", beta_form},
+                        {"uniform-bspline:degree=2", uniform_form(2)},
+                        {"uniform-bspline:degree=3", uniform_form(3)},
+                        {"uniform-bspline:degree=5", uniform_form(5)}};
+  for (const Case& c : cases) {
+    INFO(c.spec);
+    const Kernel k = parse_kernel(c.spec);
+    const int n = k.degree(), h = (n - 1) / 2;
+    CHECK(k.name() == (c.name ? c.name : c.spec));
     CHECK(k.support().lo == h - n);
     CHECK(k.support().hi == h + 1);
-    CHECK(k.degree() == n);
-    for (double s = h - n; s < h + 1; s += 1.0 / 64) {
-      const int col = h - static_cast<int>(std::floor(s));
+    double worst = 0;
+    for (double s = h - n - 1; s <= h + 2; s += 1.0 / 64) {
       INFO("s = " << s);
-      CHECK(k(s) == basis_segment(b, col, s - (h - col)));
+      CHECK(k(s) == Approx(c.form(s)).margin(2e-15));
+      worst = std::max(worst, std::abs(k(s) - c.form(s)));
     }
-    CHECK(k(h - n - 1.0 / 64) == 0);
-    CHECK(k(h + 1) == 0);
+    INFO("largest difference " << worst);
+    CHECK(worst <= 2e-15);
   }
+  // The B-spline kernel's knot values by hand: 1/6, 2/3, 1/6.
+  const Kernel b = parse_kernel("bspline");
+  CHECK(b(-1) == Approx(1.0 / 6).epsilon(1e-15));
+  CHECK(b(0) == Approx(2.0 / 3).epsilon(1e-15));
+  CHECK(b(1) == Approx(1.0 / 6).epsilon(1e-15));
+  // Beta b1 = 2, b2 = 1 at its knots: the constant row, 2/43, 25/43, 16/43 at s = -1, 0, 1.
+  const Kernel beta = parse_kernel("beta:b1=2,b2=1");
+  CHECK(beta(-1) == Approx(2.0 / 43).epsilon(1e-15));
+  CHECK(beta(0) == Approx(25.0 / 43).epsilon(1e-15));
+  CHECK(beta(1) == Approx(16.0 / 43).epsilon(1e-15));
 }
 
 TEST_CASE("derivatives of a kernel: the right-hand piece at a knot, 0 outside") {
