@@ -10,11 +10,14 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <mutex>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -33,8 +36,16 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
   const double c0 = thread_cpu_ms();
   BatchResult result;
   result.name = s.name;
+  std::string canvas;  // the scaled canvas, for a message about memory
   try {
     const FigureSpec spec = load_spec(s.path);
+    {
+      const double w = std::round(spec.canvas.width * o.scale), h = std::round(spec.canvas.height * o.scale);
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "%.0f x %.0f px at --scale %g, %.0f MiB as a float RGBA image", w, h, o.scale,
+                    std::ceil(w * h * 16 / (1 << 20)));
+      canvas = buf;
+    }
     check_scaled_canvas(spec, o.scale, "--scale");
     FigureScene fig = figure_scene(spec, o.scale);
     FigureFileOptions w;
@@ -51,6 +62,9 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
       fig.info.files.push_back(file);
     }
     result.info = std::move(fig.info);
+  } catch (const std::bad_alloc&) {
+    // One line naming the figure and its size, not a bare "std::bad_alloc".
+    result.error = s.path + ": out of memory rendering the figure" + (canvas.empty() ? "" : " (" + canvas + ")");
   } catch (const std::exception& e) {
     result.error = e.what();
   }
