@@ -30,7 +30,7 @@ Window union_window(const Window& a, const Window& b) {
   const W x0 = std::min<W>(a.x, b.x), y0 = std::min<W>(a.y, b.y);
   const W x1 = std::max(W{a.x} + a.width, W{b.x} + b.width), y1 = std::max(W{a.y} + a.height, W{b.y} + b.height);
   const W w = x1 - x0, h = y1 - y0;
-  const W most = W{max_image_pixels};
+  const W most = W{kMaxImagePixels};
   if (w > most || h > most || w * h > most || x1 > INT_MAX || y1 > INT_MAX)
     throw std::length_error("the data windows " + describe(a) + " and " + describe(b) + " span " + std::to_string(w) +
                             " x " + std::to_string(h) + " pixels, over the limit of 2^28 pixels compared");

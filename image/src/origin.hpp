@@ -1,5 +1,5 @@
 #pragma once
-// The data window's origin against max_image_origin (io.hpp), one rule and one message for the
+// The data window's origin against kMaxImageOrigin (io.hpp), one rule and one message for the
 // PNG header check and for any codec's header.
 #include <splinefig/image/io.hpp>
 
@@ -11,7 +11,7 @@ namespace splinefig::detail {
 
 // Empty if (x, y) is within the limit, else what is wrong with it.
 inline std::string origin_problem(std::int64_t x, std::int64_t y) {
-  if (std::abs(x) <= max_image_origin && std::abs(y) <= max_image_origin) return {};
+  if (std::abs(x) <= kMaxImageOrigin && std::abs(y) <= kMaxImageOrigin) return {};
   return "data window origin (" + std::to_string(x) + ", " + std::to_string(y) + ") out of range (limit 2^30 either way)";
 }
 

@@ -73,10 +73,10 @@ void check_png_size(const std::string& path, std::uint64_t width, std::uint64_t 
   // An indexed image is read as RGB or RGBA.
   const int channels = colour_type == 3 ? 4 : png_channels(colour_type);
   const std::uint64_t pixels = width * height, values = pixels * std::uint64_t(channels);
-  if (pixels > max_image_pixels || values > max_image_values)
+  if (pixels > kMaxImagePixels || values > kMaxImageValues)
     bad(path, "image too large (" + std::to_string(width) + " x " + std::to_string(height) +
                   " pixels declared in the header, limit 2^28 pixels)");
-  if (width > max_image_side || height > max_image_side)
+  if (width > kMaxImageSide || height > kMaxImageSide)
     bad(path, "image too large (" + std::to_string(width) + " x " + std::to_string(height) +
                   " pixels declared in the header, limit 65536 a side)");
 }

@@ -72,10 +72,10 @@ const detail::ImageCodec& load_codec(const std::string& path) {
 std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spec) {
   const std::uint64_t pixels = std::uint64_t(spec.width) * std::uint64_t(spec.height);
   const std::uint64_t values = pixels * std::uint64_t(spec.channels);
-  if (values > max_image_values || pixels > max_image_pixels)
+  if (values > kMaxImageValues || pixels > kMaxImagePixels)
     unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
                          std::to_string(spec.channels) + " values, limit 2^28 pixels and 2^30 values)");
-  if (std::uint64_t(spec.width) > max_image_side || std::uint64_t(spec.height) > max_image_side)
+  if (std::uint64_t(spec.width) > kMaxImageSide || std::uint64_t(spec.height) > kMaxImageSide)
     unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                          " pixels, limit 65536 a side)");
   if (std::string problem = detail::origin_problem(spec.x, spec.y); !problem.empty()) unreadable(path, problem);

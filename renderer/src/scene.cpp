@@ -254,7 +254,8 @@ void Scene::visit(SceneVisitor& v) const {
 void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
   check_points({&anchor, 1}, "text", "anchor");
   check_finite(style.size, "text", "font size");
-  if (style.size <= 0 || style.size > 4096) bad("text: font size " + std::to_string(style.size) + " is outside (0, 4096]");
+  if (style.size <= 0 || style.size > kMaxFontSize)
+    bad("text: font size " + num(style.size) + " is outside (0, " + num(kMaxFontSize) + "]");
   check_color(style.color, "text");
   check_finite(style.angle, "text", "angle");
   Item it;

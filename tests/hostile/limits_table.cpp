@@ -39,7 +39,7 @@ std::string power_of_two(long long v) {
 }  // namespace
 
 TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
-  namespace f = splinefig::figures;
+  namespace f = splinefig;  // base/limits.hpp
   const auto rows = limits_table();
   const std::map<std::string, std::string> expected{
       {"canvas side, at 1x and after `--scale`", std::to_string(f::kMaxCanvasSide) + " px"},
@@ -49,7 +49,11 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"ticks per axis (explicit, or from `*_tick_step`)", std::to_string(f::kMaxTicks)},
       {"`x_marks`, `y_marks`, curve `marks`", std::to_string(f::kMaxMarks)},
       {"`--threads` (every command) and the resampler's library thread count", std::to_string(splinefig::kMaxThreads)},
-      {"image read: either side declared in the header", std::to_string(splinefig::max_image_side) + " px"},
+      {"image read: either side declared in the header", std::to_string(splinefig::kMaxImageSide) + " px"},
+      {"image read (`diff`, `resample`, `[[image]]` files): pixels declared in the header", power_of_two((long long)(f::kMaxImagePixels))},
+      {"image read: values (pixels x channels)", power_of_two((long long)(f::kMaxImageValues))},
+      {"image read: data window origin (EXR data window, PNG `oFFs`)", power_of_two(f::kMaxImageOrigin) + " either way"},
+      {"dash work of one stroke: dashes near the canvas x (1 + width / period)^2", power_of_two((long long)(f::kMaxDashWork))},
       {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},
   };
   for (const auto& [quantity, limit] : expected) {

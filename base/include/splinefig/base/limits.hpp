@@ -2,6 +2,7 @@
 // The limits a request is held to, in one place (docs/limits.md lists each with its reason).
 // Naming rule: kMax<Thing> / kMin<Thing>, in the unit the name says.
 
+#include <cstddef>
 #include <cstdint>
 
 namespace splinefig {
@@ -24,5 +25,31 @@ inline constexpr double kMaxDashWork = 1 << 20;
 
 // Resolution written into PNG, SVG and PDF files, in dots per inch (0 leaves it unset).
 inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
+
+// Text: a font size in pixels (the em), at 1x and after --scale: glyph rasters and their
+// integer metrics.
+inline constexpr double kMaxFontSize = 4096;
+
+// An image read (diff, resample, a spec's [[image]]), checked from the file's header before any
+// pixel data is decompressed (a PNG of a few KB can declare 20000 x 20000 zeros): float values
+// (width * height * channels), 4 GiB; pixels (width * height), as for a canvas; either side
+// (OpenEXR sizes its scanline buffers by the width: a header of a few hundred bytes declaring
+// 2097155 x 3 pixels made it ask for 4 GiB); the data window's origin (EXR data windows, PNG
+// oFFs), |x|, |y|, so that origin + size and the span of two windows fit an int.
+inline constexpr std::uint64_t kMaxImageValues = std::uint64_t(1) << 30;
+inline constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 28;
+inline constexpr std::uint64_t kMaxImageSide = std::uint64_t(1) << 16;
+inline constexpr std::int64_t kMaxImageOrigin = std::int64_t(1) << 30;
+
+// Figure specs, checked where they are loaded, before any work.
+inline constexpr std::size_t kMaxSpecBytes = std::size_t(1) << 26;  // a spec file: 64 MiB, held whole
+inline constexpr std::size_t kMaxKeyParts = 64;       // parts of a dotted key or table header (the parser recurses)
+inline constexpr std::size_t kMaxMarks = 100000;      // x_marks, y_marks, curve marks: each a drawn shape
+inline constexpr std::size_t kMaxBezierPoints = 128;  // control points of one [[axes.bezier]] (degree 127)
+inline constexpr int kMaxTicks = 1000;                // ticks of one axis, each label measured
+// An axis range's span: at least kMinAxisSpan and kMinRelativeAxisSpan of the larger end's
+// magnitude, so that the pixel map and the ticks have distinct numbers to work with.
+inline constexpr double kMinAxisSpan = 1e-100;
+inline constexpr double kMinRelativeAxisSpan = 1e-12;
 
 }  // namespace splinefig

@@ -13,7 +13,7 @@ struct Window {
 };
 inline Window window_of(const Image& im) { return {im.x, im.y, im.width, im.height}; }
 // The smallest window holding both; std::length_error if it would end past INT_MAX or hold more
-// than max_image_pixels (io.hpp), since comparing pads both images to it.
+// than kMaxImagePixels (io.hpp), since comparing pads both images to it.
 Window union_window(const Window& a, const Window& b);
 
 // `im` placed on window `w` with `channels` channels; pixels and channels it lacks are 0.

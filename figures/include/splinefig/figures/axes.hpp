@@ -35,10 +35,7 @@ struct Tick {
 // finite, the span at least kMinAxisSpan and at least kMinRelativeAxisSpan of the larger end's
 // magnitude, so that the pixel map and the ticks have distinct numbers to work with.
 std::string range_problem(double lo, double hi);
-inline constexpr double kMinAxisSpan = 1e-100;
-inline constexpr double kMinRelativeAxisSpan = 1e-12;
-// The most ticks an axis draws; a forced tick step that gives more is an error.
-inline constexpr int kMaxTicks = 1000;
+// A forced tick step that gives more than kMaxTicks (base/limits.hpp) is an error.
 
 // Nice ticks for [lo, hi] (either order): steps 1, 2 or 5 times a power of ten, about
 // `target` of them, every tick inside the range (to 1e-9 of the step). `step` > 0 forces

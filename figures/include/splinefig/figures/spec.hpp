@@ -6,6 +6,7 @@
 // that map data coordinates to pixels and hold plot elements (spline curves, kernels,
 // data series, control polygons, fills, labels, annotations). Everything here is plain
 // data; load_spec() checks every value so that drawing can assume valid input.
+#include <splinefig/base/limits.hpp>
 #include <splinefig/renderer/renderer.hpp>
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/spline/basis.hpp>
@@ -29,15 +30,7 @@ struct SpecFileError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Largest canvas: 32768 px a side and 2^28 pixels in all (after --scale).
-inline constexpr int kMaxCanvasSide = 32768;
-inline constexpr long long kMaxCanvasPixels = 1LL << 28;
-// Further limits checked where specs are validated, before any work (docs/limits.md).
-inline constexpr std::size_t kMaxSpecBytes = std::size_t(1) << 26;  // a spec file: 64 MiB
-inline constexpr std::size_t kMaxMarks = 100000;                    // x_marks, y_marks, curve marks
-inline constexpr double kMaxFontSize = 4096;                         // text sizes, px (also after --scale)
-inline constexpr std::size_t kMaxKeyParts = 64;                     // parts of a dotted key or table header
-inline constexpr std::size_t kMaxBezierPoints = 128;  // control points of one [[axes.bezier]] (degree 127)
+// The limits a spec is checked against (canvas, marks, key parts, ...) are in base/limits.hpp.
 
 struct Canvas {
   int width = 800, height = 500;

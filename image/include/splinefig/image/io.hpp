@@ -9,6 +9,7 @@
 //
 // Writing goes through write_file_atomically (atomic_file.hpp): checked, fsync'd, renamed.
 #include <splinefig/image/atomic_file.hpp>
+#include <splinefig/base/limits.hpp>
 #include <splinefig/image/image.hpp>
 
 #include <cstdint>
@@ -27,17 +28,8 @@ struct UnwritableImage : UnwritableFile {
   using UnwritableFile::UnwritableFile;
 };
 
-// Largest image accepted, in float values (width * height * channels): 2^30, 4 GiB; and in
-// pixels (width * height): 2^28, as for a canvas. Both are checked from the file's header,
-// before any pixel data is decompressed (a PNG of a few KB can declare 20000 x 20000 zeros).
-inline constexpr std::uint64_t max_image_values = std::uint64_t(1) << 30;
-inline constexpr std::uint64_t max_image_pixels = std::uint64_t(1) << 28;
-// And in either side: 65536 px (OpenEXR sizes its scanline buffers by the width; a header of a
-// few hundred bytes declaring 2097155 x 3 pixels made it ask for 4 GiB).
-inline constexpr std::uint64_t max_image_side = std::uint64_t(1) << 16;
-// And in the data window's origin (EXR data windows, PNG oFFs offsets): |x|, |y| <= 2^30, so that
-// origin + size, and the span of two windows, fit an int (an oFFs y of 2^31 - 1 overflowed it).
-inline constexpr std::int64_t max_image_origin = std::int64_t(1) << 30;
+// The limits of an image read (kMaxImageValues, kMaxImagePixels, kMaxImageSide,
+// kMaxImageOrigin) are in base/limits.hpp.
 
 enum class ReadMode {
   // The values the file holds, converted to float the way OpenImageIO converts them (8-bit
