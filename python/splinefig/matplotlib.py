@@ -55,6 +55,24 @@ def _blend_of(value: Optional[str]) -> str:
     return b
 
 
+_HINTING_FACTOR = 8  # matplotlib's default text.hinting_factor
+
+
+class _unhinted:
+    """Fonts loaded at the default hinting factor while text is measured or outlined:
+    TextToPath loads glyphs unhinted, but FreeType's advances depend on the factor."""
+
+    def __enter__(self):
+        self.old = mpl.rcParams["text.hinting_factor"]
+        if self.old != _HINTING_FACTOR:
+            dict.__setitem__(mpl.rcParams, "text.hinting_factor", _HINTING_FACTOR)
+
+    def __exit__(self, *exc):
+        if self.old != _HINTING_FACTOR:
+            dict.__setitem__(mpl.rcParams, "text.hinting_factor", self.old)
+        return False
+
+
 class _Target:
     """Where items go: the figure's scene, or a clip layer (a scene over an integer rectangle of
     the canvas, composited into the figure's scene when it is closed)."""
@@ -345,12 +363,19 @@ class RendererSplinefig(RendererBase):
         t.core.image(np.ascontiguousarray(a, dtype=np.uint8), x0, y0, x0 + w, y0 + h, "nearest")
         t.items += 1
 
+    def get_text_width_height_descent(self, s, prop, ismath):
+        """RendererBase's metrics (TextToPath's unhinted font, mathtext's path parser) at the
+        default hinting factor, so the layout does not change with text.hinting_factor."""
+        with _unhinted():
+            return super().get_text_width_height_descent(s, prop, ismath)
+
     def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
         """The glyph outlines of matplotlib's TextToPath (unhinted), filled; never snapped."""
         t = self._target(gc)
         if t is None:
             return
-        path, transform = self._get_text_path_transform(x, y, s, prop, angle, ismath)
+        with _unhinted():
+            path, transform = self._get_text_path_transform(x, y, s, prop, angle, ismath)
         fill = self._fill_color(gc, gc.get_rgb())
         if fill is None or len(path.vertices) == 0:
             return

@@ -1,0 +1,187 @@
+"""The matplotlib backend (splinefig.matplotlib) against AGG, against hand-computed coverage,
+and for the same bytes whatever the thread count or FreeType's hinting settings.
+
+AGG is the independent oracle: the same figure drawn by both must agree everywhere but at the
+edges AGG approximates (its coverage and its hinted text); an exact rectangle checks the
+splinefig side by hand."""
+import io
+
+import numpy as np
+import pytest
+
+mpl = pytest.importorskip("matplotlib")
+mpl.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from PIL import Image  # noqa: E402
+
+ndimage = pytest.importorskip("scipy.ndimage")
+
+BACKEND = "module://splinefig.matplotlib"
+
+
+def png(fig, backend=None, **kw):
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", backend=backend, **kw)
+    buf.seek(0)
+    return np.asarray(Image.open(buf).convert("RGBA")).astype(np.int32)
+
+
+def line_plot():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    x = np.linspace(0, 10, 1000)
+    ax.plot(x, np.sin(x), label="sin")
+    ax.plot(x, np.cos(x), "--", lw=2, label="cos")
+    ax.legend()
+    return fig
+
+
+def scatter():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    rng = np.random.default_rng(0)
+    ax.scatter(rng.normal(size=2000), rng.normal(size=2000), c=rng.uniform(size=2000), s=12, alpha=0.5)
+    return fig
+
+
+def fill_between():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    x = np.linspace(0, 10, 500)
+    ax.fill_between(x, np.sin(x), np.sin(x) + 1, alpha=0.4)
+    ax.fill_between(x, np.cos(x) - 1, np.cos(x), color="C2", alpha=0.6)
+    return fig
+
+
+def imshow():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    ax.imshow(np.random.default_rng(1).uniform(size=(20, 30)), cmap="viridis")
+    return fig
+
+
+def text_and_mathtext():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    ax.set_title(r"Title with $\alpha^2 + \sum_{i=0}^{n} \frac{x_i}{2}$")
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel(r"$\sqrt{\beta}$ (m)")
+    ax.text(0.1, 0.5, "Some text, rotated", rotation=30, fontsize=14)
+    ax.text(0.5, 0.2, r"$\int_0^\infty e^{-x^2}\,dx = \frac{\sqrt{\pi}}{2}$", fontsize=16)
+    return fig
+
+
+def clipped_path():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    x = np.linspace(-5, 15, 400)
+    ax.plot(x, 3 * np.sin(x), lw=3)  # runs past the axes: clipped by the clip box
+    ax.set_xlim(0, 10)
+    ax.set_ylim(-2, 2)
+    line, = ax.plot(x, np.cos(x), lw=4, color="C3")
+    circle = mpl.patches.Circle((5, 0), 1.5, transform=ax.transData, facecolor="none")
+    ax.add_patch(circle)
+    line.set_clip_path(circle)
+    return fig
+
+
+# (figure, largest mean |difference| in 8-bit levels over all pixels and channels, how far from
+# an edge of AGG's picture a large difference may be: 3 px for text, whose hinted metrics move
+# AGG's mathtext rules and glyphs by up to that much)
+FIGURES = [(line_plot, 1.0, 2), (scatter, 0.7, 2), (fill_between, 1.0, 2), (imshow, 0.7, 2),
+           (text_and_mathtext, 2.5, 3), (clipped_path, 0.7, 2)]
+
+
+def edges(img, radius=2):
+    """Pixels within `radius` of a place where AGG's picture changes (an edge of anything)."""
+    grey = img[:, :, :3].max(axis=2)
+    size = 3
+    local = ndimage.maximum_filter(grey, size) - ndimage.minimum_filter(grey, size)
+    return ndimage.binary_dilation(local > 8, iterations=radius)
+
+
+@pytest.mark.parametrize("make, mean_limit, radius", FIGURES, ids=[f[0].__name__ for f in FIGURES])
+def test_agrees_with_agg(make, mean_limit, radius):
+    fig = make()
+    agg = png(fig)
+    ours = png(fig, BACKEND)
+    plt.close(fig)
+    assert agg.shape == ours.shape
+    d = np.abs(agg - ours)
+    mean, big = d.mean(), d.max(axis=2) > 48
+    away = big & ~edges(agg, radius)
+    print(f"{make.__name__}: mean {mean:.3f} max {d.max()} large {big.sum()} px, away from AGG's edges {away.sum()}")
+    assert mean < mean_limit
+    # Every large difference is at an edge of AGG's picture, where its coverage (or its hinted
+    # glyph) is approximate; the flat areas agree.
+    assert away.sum() == 0, np.argwhere(away)[:10]
+
+
+def test_exact_rectangle_by_hand():
+    # A black rectangle from x = 10.25 to 50.75 and y = 20.5 to 70 (pixels from the top-left),
+    # unsnapped, on white: a pixel's value is 255 * (1 - covered area), by hand.
+    fig = plt.figure(figsize=(1, 1), dpi=100)
+    rect = mpl.patches.Rectangle((10.25, 100 - 70), 40.5, 49.5, transform=None, facecolor="black", edgecolor="none",
+                                 snap=False)
+    fig.add_artist(rect)
+    im = png(fig, BACKEND)
+    plt.close(fig)
+    assert im[40, 10, 0] == 64    # left column: 3/4 covered
+    assert im[40, 50, 0] == 64    # right column: 3/4 covered
+    assert im[20, 30, 0] == 128   # top row: 1/2 covered (127.5 rounds to 128)
+    assert im[20, 10, 0] == 159   # corner: 3/8 covered, 255 * 5/8 = 159.4
+    assert im[40, 30, 0] == 0 and im[70, 30, 0] == 255 and im[40, 9, 0] == 255 and im[40, 51, 0] == 255
+
+
+def test_linear_blend_option():
+    # Half-covered black over white: sRGB blending gives 255 / 2, linear light the sRGB code
+    # of 0.5 (188), by the sRGB curve.
+    fig = plt.figure(figsize=(1, 1), dpi=100)
+    fig.add_artist(mpl.patches.Rectangle((10.5, 10), 40, 40, transform=None, facecolor="black", edgecolor="none", snap=False))
+    srgb = png(fig, BACKEND)
+    linear = png(fig, BACKEND, blend="linear")
+    plt.close(fig)
+    assert srgb[70, 10, 0] == 128
+    assert linear[70, 10, 0] == round(255 * (1.055 * 0.5 ** (1 / 2.4) - 0.055))
+
+
+def busy():
+    fig, axes = plt.subplots(1, 2, figsize=(6, 3), dpi=100)
+    rng = np.random.default_rng(2)
+    axes[0].scatter(rng.normal(size=500), rng.normal(size=500), alpha=0.3)
+    axes[0].set_title(r"$\alpha_i^2$ and text")
+    axes[1].plot(np.cumsum(rng.normal(size=3000)), lw=0.7)
+    axes[1].fill_between(np.arange(100), 0, 20, hatch="//", alpha=0.3)
+    return fig
+
+
+def test_same_bytes_for_1_and_4_threads():
+    fig = busy()
+    one = png(fig, BACKEND, threads=1)
+    four = png(fig, BACKEND, threads=4)
+    plt.close(fig)
+    assert one.tobytes() == four.tobytes()
+
+
+def test_same_bytes_for_any_hinting():
+    # AGG's text changes with FreeType's hinting; the glyph outlines drawn here do not.
+    outs, aggs = [], []
+    for hinting, factor in (("force_autohint", 8), ("no_hinting", 1), ("native", 8)):
+        with mpl.rc_context({"text.hinting": hinting, "text.hinting_factor": factor}):
+            fig = text_and_mathtext()
+            outs.append(png(fig, BACKEND).tobytes())
+            aggs.append(png(fig).tobytes())
+            plt.close(fig)
+    assert len(set(aggs)) > 1  # the settings do change AGG's picture
+    assert len(set(outs)) == 1
+
+
+def test_buffer_rgba_and_transparent():
+    from splinefig.matplotlib import FigureCanvasSplinefig
+
+    fig = mpl.figure.Figure(figsize=(2, 1), dpi=50)
+    canvas = FigureCanvasSplinefig(fig)
+    canvas.draw()
+    buf = np.asarray(canvas.buffer_rgba())
+    assert buf.shape == (50, 100, 4) and buf.dtype == np.uint8 and (buf == 255).all()  # white facecolor
+    ax = fig.add_subplot()
+    ax.plot([0, 1], [0, 1], lw=8)
+    t = png(fig, BACKEND, transparent=True)
+    assert (t[:, :, 3] == 0).any() and (t[:, :, 3] == 255).any()
+    tight = png(fig, BACKEND, bbox_inches="tight", dpi=100)
+    ref = png(fig, bbox_inches="tight", dpi=100)
+    assert tight.shape == ref.shape
