@@ -80,7 +80,8 @@ int main(int argc, char** argv) {
     const auto own = flag_names(app);
     if (std::find(own.begin(), own.end(), flag) == own.end()) {
       auto near = near_flags(flag, own);
-      if (near.empty()) near = splinefig::near_misses(flag.substr(flag.find_first_not_of('-')), command_names);
+      const auto dashes = flag.find_first_not_of('-');
+      if (near.empty() && dashes != std::string::npos) near = splinefig::near_misses(flag.substr(dashes), command_names);
       return fail("splinefig", "unknown option " + printable(flag) + " (" +
                                    (near.empty() ? "splinefig takes a command first: " + commands_list + "; see splinefig --help"
                                                  : "did you mean " + splinefig::or_list(near) + "?") + ")");
@@ -90,7 +91,8 @@ int main(int argc, char** argv) {
   // The first argument a command was given and does not take (CLI11 keeps them in the order
   // typed, also when it stops at another error), preferring a flag: the likeliest cause.
   const auto extra = [](const CLI::App& sub) -> std::optional<std::string> {
-    const auto left = sub.remaining();
+    auto left = sub.remaining();
+    left.erase(std::remove(left.begin(), left.end(), "--"), left.end());
     for (const auto& a : left)
       if (a.size() > 1 && a[0] == '-') return a;
     if (!left.empty()) return left.front();
@@ -113,7 +115,8 @@ int main(int argc, char** argv) {
     }
     const CLI::App& sub = *parsed.front();
     const std::string who = "splinefig " + sub.get_name();
-    if (const auto a = extra(sub)) return fail(who, extra_argument_message(app, sub, *a));
+    // (after "--", CLI11 hands what is left over to splinefig itself)
+    if (const auto a = extra(sub) ? extra(sub) : extra(app)) return fail(who, extra_argument_message(app, sub, *a));
     if (dynamic_cast<const CLI::RequiredError*>(&e)) return fail(who, missing_message(sub));
     return fail(who, value_message(sub, e));
   }

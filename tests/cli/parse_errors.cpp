@@ -74,6 +74,9 @@ TEST_CASE("parse errors: before the command, splinefig's own flags and the comma
   check_says({}, "splinefig: a command is required: " + commands + " (see splinefig --help)");
   check_says({"rendr", spec}, "splinefig: unknown command 'rendr' (did you mean render? commands: " + commands +
                                   "; see splinefig --help)");
+  for (const char* dashes : {"-", "--", "---"})
+    check_says({dashes}, std::string("splinefig: unknown option ") + dashes + " (splinefig takes a command first: " + commands +
+                             "; see splinefig --help)");
   check_says({"frobnicate"}, "splinefig: unknown command 'frobnicate' (commands: " + commands + "; see splinefig --help)");
   const auto r = run({"--version"});
   CHECK(r.code == 0);
@@ -86,6 +89,10 @@ TEST_CASE("parse errors: a missing argument is named in words, with the command'
                        "usage: splinefig diff A B [options]");
   check_says({"render", spec}, "splinefig render: missing -o/--output PATH; usage: splinefig render SPEC -o PATH [options]");
   check_says({"diff", "a.png", "b.png", "c.png"},
+             "splinefig diff: unexpected argument 'c.png' (usage: splinefig diff A B [options]; see splinefig diff --help)");
+  check_says({"render", spec, "-o", "x.png", "--", "c.png"},
+             "splinefig render: unexpected argument 'c.png' (usage: splinefig render SPEC -o PATH [options]; see splinefig render --help)");
+  check_says({"diff", "a.png", "--", "b.png", "c.png"},
              "splinefig diff: unexpected argument 'c.png' (usage: splinefig diff A B [options]; see splinefig diff --help)");
   check_says({"version", "x"}, "splinefig version: unexpected argument 'x' (usage: splinefig version [options]; see splinefig version --help)");
 }
