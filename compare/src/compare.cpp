@@ -9,10 +9,33 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 
 namespace splinefig::compare {
+
+namespace {
+
+std::string window_text(const Window& w) {
+  return "[" + std::to_string(w.x) + ", " + std::to_string(w.y) + ", " + std::to_string(w.width) + " x " +
+         std::to_string(w.height) + "]";
+}
+
+// Both images are padded to their union, and every number is computed over it: bounded by the
+// pixels the windows hold, so that two small images far apart (1 x 1 at (0, 0) and at (8000,
+// 8000): 64M pixels, 3 GB and 10 s) are refused at once instead of comparing a sea of zeros.
+void check_padding(const Window& a, const Window& b, const Window& u) {
+  const auto area = [](const Window& w) { return std::int64_t{w.width} * w.height; };
+  const std::int64_t held = area(a) + area(b), span = area(u);
+  if (span > kMaxPaddedPixels && span > kMaxPaddingFactor * held)
+    throw std::length_error("the data windows " + window_text(a) + " and " + window_text(b) + " span " +
+                            std::to_string(u.width) + " x " + std::to_string(u.height) + " pixels, more than " +
+                            std::to_string(kMaxPaddingFactor) + " times the " + std::to_string(held) +
+                            " pixels they hold (limit: 2^22 pixels, or 16 times the pixels held)");
+}
+
+}  // namespace
 
 Comparison compare_images(const Image& a_in, const Image& b_in, const Options& options, const Image* mask) {
   Comparison r;
@@ -23,6 +46,7 @@ Comparison compare_images(const Image& a_in, const Image& b_in, const Options& o
     r.b = without_alpha(r.b);
   }
   const Window w = union_window(window_of(r.a), window_of(r.b));
+  check_padding(window_of(r.a), window_of(r.b), w);
   const int nch = std::max(r.a.channels, r.b.channels);
   r.sizes_differ = window_of(r.a) != window_of(r.b);
   r.channels_differ = r.a.channels != r.b.channels;

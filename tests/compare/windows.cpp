@@ -31,3 +31,24 @@ TEST_CASE("windows spanning more than 2^28 pixels are refused, not padded") {
   b.x = b.y = 30000;
   CHECK_THROWS_AS(compare_images(a, b, {}), std::length_error);
 }
+
+TEST_CASE("a union of over 2^22 pixels is refused when it is more than 16 times the pixels the windows hold") {
+  auto at = [](int w, int h, int x, int y) {
+    Image im = Image::zeros(w, h, 1);
+    im.x = x;
+    im.y = y;
+    return im;
+  };
+  // 2048^2 = 2^22: compared, whatever the windows hold (the union's 2^22 - 2 zeros match).
+  const Comparison c = compare_images(at(1, 1, 0, 0), at(1, 1, 2047, 2047), {});
+  CHECK(c.pa.width == 2048);
+  CHECK(c.verdict == Verdict::match);
+  // One more column: 2049 x 2048 pixels for the 2 they hold.
+  CHECK_THROWS_WITH(compare_images(at(1, 1, 0, 0), at(1, 1, 2048, 2047), {}),
+                    "the data windows [0, 0, 1 x 1] and [2048, 2047, 1 x 1] span 2049 x 2048 pixels, more than 16 "
+                    "times the 2 pixels they hold (limit: 2^22 pixels, or 16 times the pixels held)");
+  // A large image and a small one inside it or near it: the union is about what they hold.
+  const Comparison d = compare_images(at(2049, 2048, 0, 0), at(4, 4, 2050, 2050), {});
+  CHECK(d.pa.width == 2054);
+  CHECK(d.pa.height == 2054);
+}

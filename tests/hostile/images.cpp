@@ -198,3 +198,21 @@ TEST_CASE("an [[image]] reaching 1e14 px past the canvas draws its visible part"
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("two 1x1 images 8000 px apart are refused at once, not compared over 64M pixels of padding") {
+  const fs::path dir = scratch();
+  splinefig::Image a = splinefig::Image::zeros(1, 1, 3), b = splinefig::Image::zeros(1, 1, 3);
+  a.pixels = {0.5f, 0.5f, 0.5f};
+  b.pixels = {0.5f, 0.5f, 0.5f};
+  b.x = b.y = 8000;
+  splinefig::write_image((dir / "near.exr").string(), a);
+  splinefig::write_image((dir / "far.exr").string(), b);
+  const Outcome o = run_in(dir, {"diff", "near.exr", "far.exr"});
+  INFO(o.seconds << " s: " << o.err);
+  CHECK(o.seconds < 5);
+  CHECK(o.code == 2);
+  CHECK(o.err ==
+        "splinefig diff: near.exr and far.exr: the data windows [0, 0, 1 x 1] and [8000, 8000, 1 x 1] span 8001 x 8001 "
+        "pixels, more than 16 times the 2 pixels they hold (limit: 2^22 pixels, or 16 times the pixels held)\n");
+  fs::remove_all(dir);
+}

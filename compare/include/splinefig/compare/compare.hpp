@@ -40,6 +40,12 @@ struct Comparison {
   Verdict verdict = Verdict::match;   // idiff's verdict, made a failure by a failed check
 };
 
+// Both images are padded to the union of their windows: a union of more than kMaxPaddedPixels
+// that is also more than kMaxPaddingFactor times the pixels the two windows hold (two small
+// images far apart) is refused with std::length_error, as is one over union_window's limit.
+inline constexpr long long kMaxPaddedPixels = 1LL << 22;
+inline constexpr long long kMaxPaddingFactor = 16;
+
 // `mask`, if given, must have the size of the union of the two windows; its first channel
 // selects the compared pixels (non-zero: compared). Throws std::invalid_argument otherwise.
 Comparison compare_images(const Image& a, const Image& b, const Options& options, const Image* mask = nullptr);
