@@ -344,6 +344,63 @@ class RendererSplinefig(RendererBase):
                                  stroke["dashes"], stroke["dash_offset"])
         t.items += len(offs)
 
+    def draw_gouraud_triangles(self, gc, triangles_array, colors_array, transform):
+        """Triangles with colours interpolated linearly (in the blend space's values, as AGG
+        interpolates sRGB values) from their corners, sampled at pixel centres and weighted by
+        each triangle's exact area coverage. The triangles of one call are summed before they
+        are composited, so the seams of a mesh that tiles the plane are exact (no light lines)."""
+        t = self._target(gc)
+        if t is None:
+            return
+        tri = np.asarray(triangles_array, dtype=np.float64).reshape(-1, 3, 2)
+        cols = np.asarray(colors_array, dtype=np.float64).reshape(-1, 3, 4)
+        if len(tri) == 0:
+            return
+        pts = (transform + self._flip()).transform(tri.reshape(-1, 2)).reshape(-1, 3, 2)
+        ok = np.isfinite(pts).all(axis=(1, 2))
+        pts, cols = pts[ok], cols[ok]
+        if len(pts) == 0:
+            return
+        tx0, ty0 = t.x0, t.y0
+        tw, th = t.scene.width, t.scene.height
+        x0 = max(int(math.floor(pts[:, :, 0].min())), tx0)
+        y0 = max(int(math.floor(pts[:, :, 1].min())), ty0)
+        x1 = min(int(math.ceil(pts[:, :, 0].max())), tx0 + tw)
+        y1 = min(int(math.ceil(pts[:, :, 1].max())), ty0 + th)
+        if x1 <= x0 or y1 <= y0:
+            return
+        acc = np.zeros((y1 - y0, x1 - x0, 4), np.float64)
+        alpha = gc.get_alpha() if gc.get_forced_alpha() else 1.0
+        srgb = self.blend == "srgb"
+        for p, c in zip(pts, cols):
+            bx0, by0 = max(int(math.floor(p[:, 0].min())), x0), max(int(math.floor(p[:, 1].min())), y0)
+            bx1, by1 = min(int(math.ceil(p[:, 0].max())), x1), min(int(math.ceil(p[:, 1].max())), y1)
+            if bx1 <= bx0 or by1 <= by0:
+                continue
+            (ax, ay), (bx, by), (cx, cy) = p
+            det = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay)
+            if det == 0:
+                continue
+            cov = self._coverage(Path(np.vstack([p, p[:1]]), [1, 2, 2, 79]), bx0, by0, bx1 - bx0, by1 - by0)
+            yy, xx = np.mgrid[by0:by1, bx0:bx1] + 0.5
+            w1 = ((xx - ax) * (cy - ay) - (cx - ax) * (yy - ay)) / det
+            w2 = ((bx - ax) * (yy - ay) - (xx - ax) * (by - ay)) / det
+            w0 = 1 - w1 - w2
+            rgba = w0[..., None] * c[0] + w1[..., None] * c[1] + w2[..., None] * c[2]
+            rgba = np.clip(rgba, 0.0, 1.0)
+            a = rgba[..., 3] * alpha
+            rgb = rgba[..., :3]
+            if not srgb:
+                rgb = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+            k = (a * cov)[..., None]
+            acc[by0 - y0:by1 - y0, bx0 - x0:bx1 - x0, :3] += rgb * k
+            acc[by0 - y0:by1 - y0, bx0 - x0:bx1 - x0, 3] += k[..., 0]
+        acc = np.minimum(acc, 1.0).astype(np.float32)
+        if srgb:
+            acc = _core.srgb_to_linear_rgba(np.ascontiguousarray(acc))
+        t.core.image(np.ascontiguousarray(acc, dtype=np.float32), x0 - tx0, y0 - ty0, x1 - tx0, y1 - ty0, "nearest")
+        t.items += 1
+
     def draw_image(self, gc, x, y, im, transform=None):
         t = self._target(gc)
         if t is None:

@@ -79,11 +79,20 @@ def clipped_path():
     return fig
 
 
+def gouraud():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    x = np.linspace(0, 1, 8)
+    X, Y = np.meshgrid(x, x)
+    ax.pcolormesh(X, Y, np.sin(3 * X) * Y, shading="gouraud")
+    return fig
+
+
 # (figure, largest mean |difference| in 8-bit levels over all pixels and channels, how far from
 # an edge of AGG's picture a large difference may be: 3 px for text, whose hinted metrics move
 # AGG's mathtext rules and glyphs by up to that much)
 FIGURES = [(line_plot, 1.0, 2), (scatter, 0.7, 2), (fill_between, 1.0, 2), (imshow, 0.7, 2),
-           (text_and_mathtext, 2.5, 3), (clipped_path, 0.7, 2)]
+           (text_and_mathtext, 2.5, 3), (clipped_path, 0.7, 2),
+           (gouraud, 1.0, 2)]
 
 
 def edges(img, radius=2):
