@@ -1,5 +1,5 @@
 """A pytest plugin that runs matplotlib's own check_figures_equal tests with the splinefig
-backend drawing every PNG (tests/matplotlib/README.md).
+backend drawing every PNG (docs/matplotlib.md).
 
 It keeps only the items whose function is check_figures_equal's wrapper with ext "png" (both
 figures of such a test are saved as PNG and compared by matplotlib's compare_images), and
