@@ -194,3 +194,26 @@ def test_buffer_rgba_and_transparent():
     tight = png(fig, BACKEND, bbox_inches="tight", dpi=100)
     ref = png(fig, bbox_inches="tight", dpi=100)
     assert tight.shape == ref.shape
+
+
+def test_scene_paths_by_hand():
+    import splinefig
+
+    # The rasterizer flattens curves within 1e-4 px, so an area may be short by up to 1e-4 px
+    # times the curve's length (under 40 px here): 4e-3.
+    # A parabolic segment: the quadratic from (2, 10) with control (10, -6) to (18, 10), closed by
+    # its chord, has 2/3 of the area of the triangle of its three points (Archimedes): 2/3 * 128.
+    s = splinefig.Scene(24, 16, background=(0, 0, 0, 0))
+    s.fill_path([(2, 10), (10, -6), (18, 10), (0, 0)], [1, 3, 3, 79], color=(1, 1, 1, 1))
+    assert abs(float(s.render()[:, :, 3].sum()) - 2 / 3 * 128) < 4e-3
+    # A cubic (0,0) (0,h) (L,h) (L,0) closed by its chord: y = 3h t(1-t), x = L(3t^2 - 2t^3), so
+    # the area is the integral of y dx = 18 h L * integral of t^2 (1-t)^2 dt = 18/30 h L = 0.6 h L.
+    s = splinefig.Scene(24, 16, background=(0, 0, 0, 0), blend="srgb")
+    s.fill_path([(2, 14), (2, 2), (22, 2), (22, 14), (0, 0)], [1, 4, 4, 4, 79], color=(1, 1, 1, 1))
+    assert abs(float(s.render()[:, :, 3].sum()) - 0.6 * 20 * 12) < 4e-3
+    with pytest.raises(ValueError, match="codes: unknown path code 5 at vertex 1"):
+        splinefig.Scene(8, 8).fill_path([(0, 0), (1, 1)], [1, 5])
+    with pytest.raises(ValueError, match="runs past the last vertex"):
+        splinefig.Scene(8, 8).stroke_path([(0, 0), (1, 1), (2, 2)], [1, 4, 4])
+    with pytest.raises(ValueError, match="blend: unknown value 'gamma'"):
+        splinefig.Scene(8, 8, blend="gamma")
