@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace splinefig::compare {
@@ -14,7 +15,7 @@ namespace {
 using Plane = std::vector<float>;
 using Rgb = std::array<float, 3>;
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = std::numbers::pi;
 constexpr float qc = 0.7f, qf = 0.5f, pc = 0.4f, pt = 0.95f;
 // D65 white and its inverse (the paper's reference illuminant).
 constexpr Rgb white = {0.950428545f, 1.0f, 1.088900371f};

@@ -10,12 +10,11 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 namespace splinefig::figures::detail {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double left_of(double t) { return std::nextafter(t, -std::numeric_limits<double>::infinity()); }
 
@@ -122,7 +121,7 @@ std::vector<GeneratedPart> parts_of(const ZoneplateElement& e) {
   for (int y = 0; y < half; ++y)
     for (int x = y; x < half; ++x) {
       const double r2 = d2[static_cast<std::size_t>(x)] + d2[static_cast<std::size_t>(y)];
-      const float v = static_cast<float>(0.5 + 0.5 * std::cos(kPi * r2 / n));
+      const float v = static_cast<float>(0.5 + 0.5 * std::cos(std::numbers::pi * r2 / n));
       for (const int a : {x, n - 1 - x})
         for (const int b : {y, n - 1 - y}) {
           src.at(a, b, 0) = v;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <map>
 #include <mutex>
+#include <numbers>
 #include <tuple>
 #include <cmath>
 #include <stdexcept>
@@ -161,7 +162,7 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
   else if (op.anchor.valign == render::VAlign::Middle) oy = 0.5 * (rt.ascent - rt.descent);
   else if (op.anchor.valign == render::VAlign::Bottom) oy = -rt.descent;
   const bool upright = op.angle == 0;
-  const double a = op.angle * 3.14159265358979323846 / 180;
+  const double a = op.angle * std::numbers::pi / 180;
   // Exact for the quarter turns axis labels use.
   const double c = op.angle == 90 ? 0.0 : std::cos(a), sn = op.angle == 90 ? 1.0 : std::sin(a);
   const Vec2 at{op.at.x * s, op.at.y * s};

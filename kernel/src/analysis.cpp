@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 namespace splinefig {
 namespace {
 
-using detail::kPi;
 using detail::quadrature;
 
 // I_m(t) = integral_0^1 u^m e^{-itu} du for m = 0..n. From integrating by parts,
@@ -91,7 +91,7 @@ bool interpolating(const Kernel& k) {
 }
 
 std::complex<double> fourier(const Kernel& k, double freq) {
-  const double w = 2 * kPi * freq;
+  const double w = 2 * std::numbers::pi * freq;
   const Support s = k.support();
   if (!k.polynomial()) {
     // An even kernel: K(f) = integral k(s) cos(w s) ds, an entire integrand.

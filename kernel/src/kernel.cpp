@@ -6,12 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace splinefig {
 namespace {
 
-double sinc(double x) { return x == 0 ? 1.0 : std::sin(detail::kPi * x) / (detail::kPi * x); }
+double sinc(double x) { return x == 0 ? 1.0 : std::sin(std::numbers::pi * x) / (std::numbers::pi * x); }
 
 }  // namespace
 

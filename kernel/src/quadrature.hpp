@@ -2,10 +2,9 @@
 // Internal: composite 16-point Gauss-Legendre quadrature, for the non-polynomial kernels.
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace splinefig::detail {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Nodes and weights on [-1, 1], by Newton's method on P_16.
 struct GaussLegendre {
@@ -13,7 +12,7 @@ struct GaussLegendre {
   std::array<double, n> x{}, w{};
   GaussLegendre() {
     for (int i = 0; i < n; ++i) {
-      double z = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 0;
+      double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 0;
       for (int it = 0; it < 100; ++it) {
         double p0 = 1, p1 = z;
         for (int k = 2; k <= n; ++k) {

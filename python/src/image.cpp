@@ -3,36 +3,19 @@
 #include "common.hpp"
 #include "modules.hpp"
 
+#include <splinefig/base/huge_pages.hpp>
 #include <splinefig/image/io.hpp>
 
 #include <cstdint>
 #include <cstring>
-#include <sys/mman.h>
 
 namespace splinefig::python {
-
-namespace {
-
-// Fresh pixel storage is faulted in page by page by the copy below; transparent huge pages
-// (advice before the first write) make that 512 times fewer faults, which halves the copy of a
-// large image. Advice only: without THP support nothing changes.
-void advise_huge_pages(const void* data, std::size_t bytes) {
-#ifdef MADV_HUGEPAGE
-  constexpr std::uintptr_t huge = std::uintptr_t{2} << 20;
-  const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(data) + huge - 1) & ~(huge - 1);
-  const std::uintptr_t e = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(huge - 1);
-  if (e > b + huge) ::madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
-#else
-  (void)data, (void)bytes;
-#endif
-}
-
-}  // namespace
 
 Image image_from_array(const f32array& a, Encoding encoding) {
   const int h = static_cast<int>(a.shape(0)), w = static_cast<int>(a.shape(1));
   const int c = a.ndim() == 3 ? static_cast<int>(a.shape(2)) : 1;
   Image im(w, h, c, encoding);
+  // Huge pages before the first write: 512 times fewer page faults in the copy below.
   advise_huge_pages(im.pixels.data(), im.pixels.size() * sizeof(float));
   std::memcpy(im.pixels.data(), a.data(), im.pixels.size() * sizeof(float));
   return im;

@@ -17,7 +17,7 @@
 // right of it inside the box is unchanged), and y is cut to [clip.y0, clip.y1]. So coordinates
 // like 1e12 cost nothing later and all arithmetic downstream stays near the canvas.
 #include "geometry.hpp"
-#include "huge_pages.hpp"
+#include <splinefig/base/huge_pages.hpp>
 
 #include <splinefig/image/image.hpp>
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace splinefig::render::detail {
 namespace {
@@ -11,7 +12,7 @@ void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
   x.assign(static_cast<std::size_t>(n), 0);
   w.assign(static_cast<std::size_t>(n), 0);
   for (int i = 0; i < n; ++i) {
-    double z = std::cos(kPi * (i + 0.75) / (n + 0.5));
+    double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5));
     double dp = 1;
     for (int it = 0; it < 100; ++it) {
       double p0 = 1, p1 = 0;

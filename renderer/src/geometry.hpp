@@ -11,11 +11,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace splinefig::render::detail {
 
 inline constexpr double kArcTolerance = 1e-4;
-inline constexpr double kPi = 3.14159265358979323846;
 
 inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
 inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
@@ -36,9 +36,9 @@ struct Box {
 
 // The largest chord angle whose sagitta on a circle of radius r stays below kArcTolerance.
 inline double fine_arc_step(double r) {
-  if (r <= kArcTolerance) return kPi / 2;
+  if (r <= kArcTolerance) return std::numbers::pi / 2;
   double s = 2.0 * std::acos(1.0 - kArcTolerance / r);
-  return std::clamp(s, 1e-9, kPi / 2);
+  return std::clamp(s, 1e-9, std::numbers::pi / 2);
 }
 
 // Calls emit(point) for the interior vertices of the arc of centre c and radius r from angle

@@ -1,19 +1,20 @@
 #include "prepare.hpp"
 
-#include "huge_pages.hpp"
+#include <splinefig/base/huge_pages.hpp>
 #include "stroke.hpp"
 #include "splinefig/base/parallel.hpp"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
 
 namespace splinefig::render::detail {
 namespace {
 
 void disk_contour(Vec2 c, double r, ChainBuilder& out) {
   out.move_to(Vec2{c.x + r, c.y});
-  arc_interior(c, r, 0.0, 2 * kPi, out.clip(), [&](Vec2 q) { out.line_to(q); });
+  arc_interior(c, r, 0.0, 2 * std::numbers::pi, out.clip(), [&](Vec2 q) { out.line_to(q); });
   out.close();
 }
 
@@ -107,7 +108,6 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
   Shape& s = out.shape;
   s.chain_begin = g.chains.size();
   ChainBuilder b(g, clip, shift);
-  auto sh = [](Vec2 p) { return p; };  // the builder translates
   switch (it.kind) {
     case K::Stroke: {
       const std::vector<Vec2>& pts = it.contours[0];
@@ -120,14 +120,14 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
     case K::Fill:
       for (const auto& c : it.contours) {
         if (c.empty()) continue;
-        b.move_to(sh(c[0]));
-        for (std::size_t i = 1; i < c.size(); ++i) b.line_to(sh(c[i]));
+        b.move_to(c[0]);
+        for (std::size_t i = 1; i < c.size(); ++i) b.line_to(c[i]);
         b.close();
       }
       s.rule = it.rule;
       break;
     case K::Disk:
-      if (it.radius > 0) disk_contour(sh(it.centre), it.radius, b);
+      if (it.radius > 0) disk_contour(it.centre, it.radius, b);
       s.simple = true;
       break;
     case K::Ring: {
@@ -135,14 +135,14 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
       // A closed polygon on the circle, fine enough that its chords stay within the arc
       // tolerance of the circle; then stroked like any closed path.
       std::vector<Vec2> pts;
-      Vec2 c = sh(it.centre);
+      Vec2 c = it.centre;
       pts.push_back(Vec2{c.x + it.radius, c.y});
-      arc_interior(c, it.radius, 0.0, 2 * kPi, clip, [&](Vec2 q) { pts.push_back(q); });
+      arc_interior(c, it.radius, 0.0, 2 * std::numbers::pi, clip, [&](Vec2 q) { pts.push_back(q); });
       stroke_path(pts, true, it.stroke, b);
       break;
     }
     case K::Marker:
-      if (it.radius > 0) marker_contour(it.marker, sh(it.centre), it.radius, b);
+      if (it.radius > 0) marker_contour(it.marker, it.centre, it.radius, b);
       s.simple = true;
       break;
     case K::PathFill:

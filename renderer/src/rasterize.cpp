@@ -4,7 +4,7 @@
 // which thread ran it or on the other bands, so any thread count gives identical bytes.
 #include "box_coverage.hpp"
 #include "filter_coverage.hpp"
-#include "huge_pages.hpp"
+#include <splinefig/base/huge_pages.hpp>
 #include "raster_item.hpp"
 #include "prepare.hpp"
 

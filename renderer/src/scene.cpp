@@ -3,7 +3,7 @@
 #include "scene_item.hpp"
 #include "stroke.hpp"
 
-#include "huge_pages.hpp"
+#include <splinefig/base/huge_pages.hpp>
 
 #include <splinefig/renderer/text.hpp>
 
@@ -17,7 +17,7 @@ namespace {
 
 // Appends with geometric growth into huge-page-advised storage (100k items are tens of MB).
 void add(std::vector<Scene::Item>& items, Scene::Item&& it) {
-  if (items.size() == items.capacity()) detail::reserve_huge(items, std::max<std::size_t>(64, 2 * items.capacity()));
+  if (items.size() == items.capacity()) reserve_huge(items, std::max<std::size_t>(64, 2 * items.capacity()));
   items.push_back(std::move(it));
 }
 

@@ -1,5 +1,6 @@
 #include "stroke.hpp"
 
+#include <numbers>
 #include <vector>
 
 namespace splinefig::render::detail {
@@ -73,7 +74,7 @@ void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::v
   v.push_back(A);
   switch (style_.join) {
     case Join::Round: {
-      const double theta = c == 0 ? -kPi : std::atan2(c, dt);  // signed turn from a to b
+      const double theta = c == 0 ? -std::numbers::pi : std::atan2(c, dt);  // signed turn from a to b
       const double a0 = std::atan2(s * a.n.y, s * a.n.x);
       arc_interior(P, h, a0, theta, out_.clip(), [&](Vec2 q) { v.push_back(q); });
       break;
@@ -100,7 +101,7 @@ void Outliner::cap(Vec2 P, Vec2 d, Vec2 n) {
       out_.line_to(P - h * n + h * d);
       break;
     case Cap::Round:
-      arc_interior(P, h, std::atan2(n.y, n.x), -kPi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
+      arc_interior(P, h, std::atan2(n.y, n.x), -std::numbers::pi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
       break;
   }
   out_.line_to(P - h * n);
@@ -207,9 +208,9 @@ void Outliner::single_point(Vec2 P, Vec2 d) {
     case Cap::Round: {
       const double a0 = std::atan2(n.y, n.x);
       out_.move_to(P + h * n);
-      arc_interior(P, h, a0, -kPi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
+      arc_interior(P, h, a0, -std::numbers::pi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
       out_.line_to(P - h * n);
-      arc_interior(P, h, a0 + kPi, -kPi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
+      arc_interior(P, h, a0 + std::numbers::pi, -std::numbers::pi, out_.clip(), [&](Vec2 q) { out_.line_to(q); });
       out_.close();
       return;
     }

@@ -58,6 +58,10 @@ class OutlinePieces {
   // No pieces (size() == 0) unless the stroke is open, has no dashes and more than two pieces'
   // worth of points; stroke_path draws it then.
   OutlinePieces(std::span<const Vec2> pts, bool closed, const StrokeStyle& style);
+  // It holds a reference to the style and a span into its own copy of the points: neither a
+  // copy nor a move would keep them valid.
+  OutlinePieces(const OutlinePieces&) = delete;
+  OutlinePieces& operator=(const OutlinePieces&) = delete;
   std::size_t size() const { return pieces_; }
   std::size_t points() const { return p_.size(); }
   // Appends piece k to `out`; false, appending nothing, if its points repeat a point.

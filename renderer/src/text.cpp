@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
@@ -389,7 +390,7 @@ void turn(double deg, double& c, double& s) {
     s = cs[k][1];
     return;
   }
-  const double a = r * 3.14159265358979323846 / 180.0;
+  const double a = r * std::numbers::pi / 180.0;
   c = std::cos(a);
   s = std::sin(a);
 }

@@ -7,6 +7,7 @@
 #include <cairo-pdf.h>
 
 #include <ctime>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -47,14 +48,14 @@ class PdfWriter final : public render::SceneVisitor {
   void fill_circle(Vec2 ctr, double r, render::Color c) override {
     if (!(r > 0) || c.a <= 0) return;
     cairo_new_path(cr_);
-    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * 3.14159265358979323846);
+    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * std::numbers::pi);
     cairo_close_path(cr_);
     fill(render::FillRule::NonZero, c);
   }
   void stroke_circle(Vec2 ctr, double r, const render::StrokeStyle& st, render::Color c) override {
     if (!(r > 0) || !(st.width > 0) || c.a <= 0) return;
     cairo_new_path(cr_);
-    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * 3.14159265358979323846);
+    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * std::numbers::pi);
     cairo_close_path(cr_);
     stroke(st, c);
   }

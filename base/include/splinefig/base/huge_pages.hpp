@@ -1,5 +1,5 @@
 #pragma once
-// Large buffers (the canvas, a million-point outline) are touched page by page when first
+// Large buffers (the canvas, a million-point outline, an image handed over from Python) are touched page by page when first
 // written; with 4 KiB pages that costs one page fault per 4 KiB, which dominated rendering a
 // 1M-point path. Asking for transparent huge pages on such a buffer *before* writing it cuts
 // the faults 512-fold. Advice only: without THP support nothing changes.
@@ -8,7 +8,7 @@
 #include <sys/mman.h>
 #include <vector>
 
-namespace splinefig::render::detail {
+namespace splinefig {
 
 inline void advise_huge_pages(const void* data, std::size_t bytes) {
 #ifdef MADV_HUGEPAGE
@@ -31,4 +31,4 @@ void reserve_huge(std::vector<T, A>& v, std::size_t n) {
   advise_huge_pages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(T));
 }
 
-}  // namespace splinefig::render::detail
+}  // namespace splinefig
