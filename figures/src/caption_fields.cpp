@@ -309,8 +309,14 @@ std::string caption_text(const FigureSpec& spec) {
   std::map<std::string, std::string> values;
   for (const CaptionField& f : spec.caption_fields) {
     const Value v = evaluate(spec, f);
-    values[f.name] = v.vector ? "(" + caption_number(v.v[0], f.decimals) + ", " + caption_number(v.v[1], f.decimals) + ")"
-                              : caption_number(v.v[0], f.decimals);
+    std::string text = caption_number(v.v[0], f.decimals);
+    if (v.vector) {  // "(x, y)", built by appends (GCC 12 -Wrestrict, PR 105329, on "(" + s)
+      text.insert(text.begin(), '(');
+      text += ", ";
+      text += caption_number(v.v[1], f.decimals);
+      text += ')';
+    }
+    values[f.name] = std::move(text);
   }
   std::string out;
   std::size_t at = 0;

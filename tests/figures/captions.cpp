@@ -41,9 +41,18 @@ std::string fmt(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   std::string s = buf;
-  return s[0] == '-' ? "\u2212" + s.substr(1) : s;
+  if (s[0] != '-') return s;
+  std::string minus = "\u2212";
+  return minus.append(s, 1);
 }
-std::string fmt(Vec2 p, int decimals) { return "(" + fmt(p.x, decimals) + ", " + fmt(p.y, decimals) + ")"; }
+std::string fmt(Vec2 p, int decimals) {  // built by appends (GCC 12 -Wrestrict, PR 105329, on "(" + s)
+  std::string s = "(";
+  s += fmt(p.x, decimals);
+  s += ", ";
+  s += fmt(p.y, decimals);
+  s += ')';
+  return s;
+}
 
 Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
 Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
@@ -247,7 +256,10 @@ TEST_CASE("s002-fig474's caption prints the point counts 3 + 2^k, and (b) is the
   for (int k = 0; k <= 3; ++k)
     for (int j = 0; j < (1 << k); ++j) {
       std::string idx;
-      for (int i = j; i < j + 4; ++i) idx += (j + 3 >= 10 && i > j ? " " : "") + std::to_string(i);
+      for (int i = j; i < j + 4; ++i) {
+        if (j + 3 >= 10 && i > j) idx += ' ';
+        idx += std::to_string(i);
+      }
       want.push_back("$P^" + std::to_string(k) + "_{" + idx + "}$");
     }
   std::vector<std::string> got;
