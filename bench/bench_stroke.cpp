@@ -1,5 +1,9 @@
-// Stroke rasterization: splinefig (one thread and all cores) against Cairo and AGG on the
-// stroke workloads A, B and C, 1024x1024, opaque black on white, canvas cleared every iteration.
+// Stroke rasterization: splinefig (one thread and all cores) against Cairo, AGG and Blend2D on
+// the stroke workloads A, B and C, 1024x1024, opaque black on white, canvas cleared every
+// iteration. Blend2D is a peer when the bench is configured with -DSPLINEFIG_BLEND2D_SOURCE_DIR
+// (bench/CMakeLists.txt); otherwise its rows are reported as absent (skipped, no number). Its
+// context renders synchronously on the calling thread (thread_count 0) and is ended (flushed)
+// inside the timed loop.
 //   A1, A3: 100,000 separate segments (each its own path, butt caps), width 1 and 3.
 //   B:      one open polyline of 1,000,000 points (a 3:4 Lissajous), width 1.5, round joins.
 //   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).
@@ -7,8 +11,9 @@
 //           on the canvas (R1k, R10k, R30k: 10^3, 10^4, 3*10^4 points; the crossings grow as
 //           n^2), or a random walk with normal steps (sigma 8) reflected into the canvas (Rw100k,
 //           Rw1M: 10^5 and 10^6 points).
-// After the runs it prints the ratio table: splinefig's one-thread CPU time against Cairo's and
-// AGG's, and its wall-time speed-up on all threads, each marked where it misses its goal.
+// After the runs it prints the ratio table: splinefig's one-thread CPU time against Cairo's,
+// AGG's and Blend2D's, and its wall-time speed-up on all threads, each marked where it misses
+// its goal.
 // accuracy/<set>/<impl> renders random strokes (set "random") or seeded walks of hairpins,
 // near-reversals and sub-width segments (set "walks") and reports the coverage error against the
 // exact union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
@@ -33,6 +38,9 @@
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 #include <cairo.h>
+#ifdef SPLINEFIG_HAVE_BLEND2D
+#include <blend2d/blend2d.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -40,6 +48,8 @@
 #include <cstdio>
 #include <string>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <map>
 #include <random>
 #include <thread>
@@ -257,6 +267,61 @@ void draw_agg(AggCanvas& c, const Workload& w, bool clear_white = true, unsigned
   }
 }
 
+// ---- Blend2D ---------------------------------------------------------------------------
+#ifdef SPLINEFIG_HAVE_BLEND2D
+constexpr bool kHaveBlend2D = true;
+
+struct Blend2DCanvas {
+  BLImage img;
+  explicit Blend2DCanvas(int size = kSize) : img(size, size, BL_FORMAT_PRGB32) {}
+};
+
+// As Cairo and AGG: one path per stroke call, the same width, join (miter falling back to bevel
+// beyond the limit, as Cairo's and AGG's miter_join_revert), cap and miter limit 4. The context is
+// synchronous (thread_count 0: every call renders on this thread) and end() flushes it.
+void draw_blend2d(Blend2DCanvas& c, const Workload& w, bool clear_white = true, std::uint8_t ink = 0) {
+  BLContextCreateInfo info{};
+  info.thread_count = 0;
+  BLContext ctx;
+  if (ctx.begin(c.img, info) != BL_SUCCESS) {
+    std::fprintf(stderr, "bench_stroke: Blend2D could not begin a context\n");
+    std::exit(1);
+  }
+  ctx.set_comp_op(BL_COMP_OP_SRC_COPY);
+  if (clear_white) ctx.fill_all(BLRgba32(0xFFFFFFFFu)); else ctx.clear_all();
+  ctx.set_comp_op(BL_COMP_OP_SRC_OVER);
+  ctx.set_stroke_style(BLRgba32(ink, ink, ink, 255));
+  ctx.set_stroke_width(w.width);
+  ctx.set_stroke_join(w.join == sr::Join::Round ? BL_STROKE_JOIN_ROUND
+                      : w.join == sr::Join::Bevel ? BL_STROKE_JOIN_BEVEL : BL_STROKE_JOIN_MITER_BEVEL);
+  ctx.set_stroke_caps(w.cap == sr::Cap::Round ? BL_STROKE_CAP_ROUND
+                      : w.cap == sr::Cap::Square ? BL_STROKE_CAP_SQUARE : BL_STROKE_CAP_BUTT);
+  ctx.set_stroke_miter_limit(4);
+  BLPath path;
+  for (const Path& p : w.paths) {
+    path.clear();
+    path.move_to(p.pts[0].x, p.pts[0].y);
+    for (std::size_t i = 1; i < p.pts.size(); ++i) path.line_to(p.pts[i].x, p.pts[i].y);
+    ctx.stroke_path(path);
+  }
+  ctx.end();
+}
+
+// Alpha of pixel (x, y) of a PRGB32 image (0xAARRGGBB words).
+double blend2d_alpha(const Blend2DCanvas& c, int x, int y) {
+  BLImageData d;
+  c.img.get_data(&d);
+  const auto* row = static_cast<const std::uint8_t*>(d.pixel_data) + static_cast<std::ptrdiff_t>(y) * d.stride;
+  std::uint32_t px;
+  std::memcpy(&px, row + 4 * x, 4);
+  return (px >> 24) / 255.0;
+}
+#else
+constexpr bool kHaveBlend2D = false;
+#endif
+constexpr const char* kBlend2DAbsent =
+    "Blend2D absent: configure with -DSPLINEFIG_BLEND2D_SOURCE_DIR=<blend2d checkout> (bench/CMakeLists.txt)";
+
 // ---- timed benchmarks ------------------------------------------------------------------
 void BM_splinefig(benchmark::State& state, char id, int threads) {
   const Workload& w = workload(id);
@@ -282,6 +347,21 @@ void BM_agg(benchmark::State& state, char id) {
     draw_agg(c, w);
     benchmark::DoNotOptimize(c.buf.data());
   }
+}
+
+void BM_blend2d(benchmark::State& state, [[maybe_unused]] char id) {
+#ifdef SPLINEFIG_HAVE_BLEND2D
+  const Workload& w = workload(id);
+  Blend2DCanvas c;
+  for (auto _ : state) {
+    draw_blend2d(c, w);
+    BLImageData d;
+    c.img.get_data(&d);
+    benchmark::DoNotOptimize(d.pixel_data);
+  }
+#else
+  state.SkipWithError(kBlend2DAbsent);
+#endif
 }
 
 // ---- peak memory, each drawing in a fresh child process --------------------------------
@@ -363,6 +443,7 @@ std::vector<AccuracyCase> accuracy_cases(bool walks) {
 }
 
 void BM_accuracy(benchmark::State& state, int impl, bool walks) {
+  if (impl == 3 && !kHaveBlend2D) return state.SkipWithError(kBlend2DAbsent);
   static const auto random_cases = accuracy_cases(false);
   static const auto walk_cases = accuracy_cases(true);
   const auto& cases = walks ? walk_cases : random_cases;
@@ -382,10 +463,17 @@ void BM_accuracy(benchmark::State& state, int impl, bool walks) {
         const int stride = cairo_image_surface_get_stride(c.surface);
         for (int y = 0; y < n; ++y)
           for (int x = 0; x < n; ++x) got[static_cast<std::size_t>(y * n + x)] = d[y * stride + x * 4 + 3] / 255.0;
-      } else {
+      } else if (impl == 2) {
         AggCanvas c(n);
         draw_agg(c, w, false, 255);
         for (std::size_t i = 0; i < got.size(); ++i) got[i] = c.buf[i * 4 + 3] / 255.0;
+      } else {
+#ifdef SPLINEFIG_HAVE_BLEND2D
+        Blend2DCanvas c(n);
+        draw_blend2d(c, w, false, 255);
+        for (int y = 0; y < n; ++y)
+          for (int x = 0; x < n; ++x) got[static_cast<std::size_t>(y * n + x)] = blend2d_alpha(c, x, y);
+#endif
       }
       for (std::size_t i = 0; i < got.size(); ++i) {
         if (got[i] == 0 && want[i] == 0) continue;
@@ -409,6 +497,7 @@ void register_all() {
     benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_splinefig, id, all)->Unit(benchmark::kMillisecond)->UseRealTime();
     benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_cairo, id)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_agg, id)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "blend2d").c_str(), BM_blend2d, id)->Unit(benchmark::kMillisecond);
   }
   for (auto [id, name] : {std::pair{'1', "A1"}, {'3', "A3"}, {'B', "B"}, {'C', "C"}}) {
     std::string base = std::string("memory/") + name + "/";
@@ -419,7 +508,7 @@ void register_all() {
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_memory, id, 2, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
   }
   for (auto [walks, set] : {std::pair{false, "random"}, {true, "walks"}})
-    for (auto [impl, name] : {std::pair{0, "splinefig"}, {1, "cairo"}, {2, "agg"}})
+    for (auto [impl, name] : {std::pair{0, "splinefig"}, {1, "cairo"}, {2, "agg"}, {3, "blend2d"}})
       benchmark::RegisterBenchmark((std::string("accuracy/") + set + "/" + name).c_str(), BM_accuracy, impl, walks)
           ->Iterations(1)
           ->Unit(benchmark::kMillisecond);
@@ -428,9 +517,9 @@ void register_all() {
 }  // namespace
 
 // The console report, then the ratio table of the stroke workloads that ran: splinefig's
-// one-thread CPU time against Cairo's and AGG's (goals: 2x Cairo, 1.5x AGG), and its speed-up
-// on all threads in wall time (goal for B and C: 1.7x on 2 cores). With repetitions, the
-// medians are used.
+// one-thread CPU time against Cairo's, AGG's and Blend2D's (goals: 2x Cairo, 1.5x AGG, 1x
+// Blend2D), and its speed-up on all threads in wall time (goal for B and C: 1.7x on 2 cores).
+// With repetitions, the medians are used. Without Blend2D its cells read "absent".
 class RatioReporter : public benchmark::ConsoleReporter {
  public:
   RatioReporter() : ConsoleReporter(isatty(fileno(stdout)) ? OO_Defaults : OO_Tabular) {}
@@ -453,8 +542,12 @@ class RatioReporter : public benchmark::ConsoleReporter {
     std::FILE* out = stdout;
     std::fprintf(out, "\nsplinefig against the peers (1 thread, CPU ms; speed-up on %u threads, wall):\n",
                  std::max(1u, std::thread::hardware_concurrency()));
-    std::fprintf(out, "%-8s %11s %11s %11s %9s %9s %9s\n", "workload", "splinefig", "cairo", "agg", "vs cairo",
-                 "vs agg", "threads");
+#ifdef SPLINEFIG_HAVE_BLEND2D
+    std::fprintf(out, "(Blend2D %u.%u.%u, synchronous, 1 thread)\n", BL_VERSION >> 16, (BL_VERSION >> 8) & 0xFFu,
+                 BL_VERSION & 0xFFu);
+#endif
+    std::fprintf(out, "%-8s %11s %11s %11s %11s %9s %9s %10s %9s\n", "workload", "splinefig", "cairo", "agg",
+                 "blend2d", "vs cairo", "vs agg", "vs blend2d", "threads");
     auto cell = [&](const std::map<std::string, Times>& t, const char* impl, bool cpu) {
       auto it = t.find(impl);
       return it == t.end() ? -1.0 : (cpu ? it->second.cpu : it->second.real);
@@ -467,13 +560,18 @@ class RatioReporter : public benchmark::ConsoleReporter {
     };
     for (const std::string& w : order_) {
       const auto& t = times_[w];
-      const double sf = cell(t, "splinefig", true), ca = cell(t, "cairo", true), ag = cell(t, "agg", true);
+      const double sf = cell(t, "splinefig", true), ca = cell(t, "cairo", true), ag = cell(t, "agg", true),
+                   bl = cell(t, "blend2d", true);
       const double sf_wall = cell(t, "splinefig", false), mt_wall = cell(t, "splinefig-mt", false);
       const bool scaled = w == "B" || w == "C";
-      std::fprintf(out, "%-8s %11.1f %11.1f %11.1f %9s %9s %9s\n", w.c_str(), sf, ca, ag, ratio(sf, ca, 2).c_str(),
-                   ratio(sf, ag, 1.5).c_str(), ratio(mt_wall, sf_wall, scaled ? 1.7 : 0).c_str());
+      char bl_cell[16];
+      if (bl > 0) std::snprintf(bl_cell, sizeof bl_cell, "%.1f", bl); else std::snprintf(bl_cell, sizeof bl_cell, "%s", kHaveBlend2D ? "-" : "absent");
+      std::fprintf(out, "%-8s %11.1f %11.1f %11.1f %11s %9s %9s %10s %9s\n", w.c_str(), sf, ca, ag, bl_cell,
+                   ratio(sf, ca, 2).c_str(), ratio(sf, ag, 1.5).c_str(),
+                   kHaveBlend2D ? ratio(sf, bl, 1).c_str() : "absent", ratio(mt_wall, sf_wall, scaled ? 1.7 : 0).c_str());
     }
-    std::fprintf(out, "* below the goal (2x Cairo, 1.5x AGG; threads: 1.7x for B and C)\n");
+    std::fprintf(out, "* below the goal (2x Cairo, 1.5x AGG, 1x Blend2D; threads: 1.7x for B and C)\n");
+    if (!kHaveBlend2D) std::fprintf(out, "%s\n", kBlend2DAbsent);
   }
 
  private:
