@@ -28,6 +28,7 @@ namespace {
 namespace fig = splinefig::figures;
 namespace fs = std::filesystem;
 using splinefig::cli::Failure;
+using splinefig::cli::printable;
 
 struct FiguresArgs {
   std::string out = "out/figures";
@@ -73,7 +74,14 @@ fig::BatchOptions batch_options(const FiguresArgs& a) {
 // Every spec of the directory; `only` names some of them.
 std::vector<fig::SpecFile> all_specs(const FiguresArgs& a) {
   const std::string dir = a.specs.empty() ? fig::builtin_specs_dir() : a.specs;
-  if (dir.empty() || !fs::is_directory(dir))
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir, ec);
+  if (!a.specs.empty() && !fs::is_directory(st))
+    throw Failure("--specs " + printable(a.specs) + ": " +
+                  (fs::exists(st)                               ? std::string("not a directory (give the directory of the specs)")
+                   : ec && st.type() != fs::file_type::not_found ? "cannot open it (" + ec.message() + ")"
+                                                                 : std::string("no such directory")));
+  if (dir.empty() || !fs::is_directory(st))
     throw Failure("cannot find the built-in figure specs (set SPLINEFIG_SPECS_DIR or use --specs DIR)");
   std::vector<fig::SpecFile> specs = fig::list_specs(dir);
   for (const auto& n : a.only)
@@ -105,7 +113,8 @@ int run(const FiguresArgs& a) {
   const std::vector<fig::SpecFile> chosen = selected(specs, a.only);
   std::error_code ec;
   fs::create_directories(a.out, ec);
-  if (!fs::is_directory(a.out)) throw Failure("--out " + a.out + ": cannot create the directory");
+  if (!fs::is_directory(a.out, ec))
+    throw Failure("--out " + printable(a.out) + ": cannot create the directory" + (ec ? " (" + ec.message() + ")" : ""));
 
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();

@@ -88,7 +88,7 @@ Points read_input(const std::string& path, const CsvOptions& options) {
   }
   check_input_file(path);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Failure(path + ": cannot open it");
+  if (!in) throw Failure(path + ": cannot open it (" + std::strerror(errno) + ")");
   return read_points(in, path, options);
 }
 

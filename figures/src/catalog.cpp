@@ -76,7 +76,11 @@ std::vector<SpecFile> list_specs(const std::string& dir) {
   std::vector<std::pair<double, SpecFile>> found;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (!e.is_regular_file() || e.path().extension() != ".toml") continue;
+    // A .toml that cannot be followed (a symlink loop, a dangling link) is kept: loading it
+    // gives its one-line error, as for any spec that cannot be read.
+    std::error_code status_error;
+    const bool regular = e.is_regular_file(status_error);
+    if (e.path().extension() != ".toml" || (!regular && !status_error)) continue;
     found.push_back({spec_order(e.path()), {e.path().stem().string(), e.path().string()}});
   }
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) {

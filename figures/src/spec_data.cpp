@@ -33,7 +33,11 @@ std::vector<Vec2> read_file(TableReader& r, const std::string& file_key, const s
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) r.fail(file_key, "no such data file \"" + path.string() + "\"");
+  // A symlink loop or an unreadable directory on the way is said as such, not as missing.
+  if (!fs::exists(st))
+    r.fail(file_key, ec && st.type() != fs::file_type::not_found
+                         ? "cannot open the data file \"" + path.string() + "\" (" + ec.message() + ")"
+                         : "no such data file \"" + path.string() + "\"");
   if (!fs::is_regular_file(st)) r.fail(file_key, "\"" + path.string() + "\" is not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) r.fail(file_key, "cannot read the data file \"" + path.string() + "\"");

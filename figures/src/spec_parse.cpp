@@ -54,7 +54,11 @@ Raster parse_raster(TableReader& r, const ParseContext& ctx) {
   if (file) {
     std::filesystem::path p(*file);
     if (p.is_relative()) p = std::filesystem::path(ctx.base_dir) / p;
-    if (!std::filesystem::exists(p)) r.fail("file", "no such image file \"" + p.string() + "\"");
+    std::error_code ec;  // a symlink loop or an unreadable directory is said as such, not as missing
+    if (const auto st = std::filesystem::status(p, ec); !std::filesystem::exists(st))
+      r.fail("file", ec && st.type() != std::filesystem::file_type::not_found
+                         ? "cannot open the image file \"" + p.string() + "\" (" + ec.message() + ")"
+                         : "no such image file \"" + p.string() + "\"");
     try {
       check_image_header(p.string());  // its size against the limits, before anything is decoded
     } catch (const UnreadableImage& e) {

@@ -41,6 +41,14 @@ bool iequals(const std::string& a, const std::string& b) {
   throw UnreadableImage(path + ": " + (why.empty() ? std::string("unknown error") : why));
 }
 
+// A path that does not exist, or that cannot be followed (a symlink loop, a directory on the way
+// that cannot be searched): said as such, not as missing.
+void check_exists(const std::string& path, const fs::file_status& st, const std::error_code& ec) {
+  if (fs::exists(st)) return;
+  if (ec && st.type() != fs::file_type::not_found) unreadable(path, "cannot open the file (" + ec.message() + ")");
+  unreadable(path, "no such file");
+}
+
 // Colour channels of straight (unassociated) values: sRGB-decoded when `srgb`, then
 // multiplied by alpha when `associate`.
 void to_linear_associated(Image& im, bool srgb, bool associate, int bits) {
@@ -87,7 +95,7 @@ std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spe
 void check_image_header(const std::string& path) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) unreadable(path, "no such file");
+  check_exists(path, st, ec);
   if (!fs::is_regular_file(st)) unreadable(path, fs::is_directory(st) ? "is a directory" : "not a regular file");
   if (has_png_signature(path)) {
     check_png_header(path);
@@ -106,7 +114,7 @@ void check_image_header(const std::string& path) {
 Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) unreadable(path, "no such file");
+  check_exists(path, st, ec);
   if (fs::is_directory(st)) unreadable(path, "is a directory");
   if (!fs::is_regular_file(st)) unreadable(path, "not a regular file");
   {

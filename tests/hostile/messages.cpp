@@ -1,0 +1,85 @@
+// Error messages keep the one-line, located promise on the inputs that broke it: a path that
+// cannot be followed is said as such (not as missing, not as a raw filesystem exception), a
+// --specs that is not a directory is named, and so on. Each case: exit 2 (4 for diff), one line
+// on stderr, and the line says what and where.
+#include "hostile.hpp"
+
+#include <cstdio>
+
+using namespace splinefig::hostile;
+using splinefig::test::count_lines;
+
+namespace {
+
+const std::string kCanvas = "[canvas]\nwidth = 24\nheight = 24\n";
+
+// A symlink loop: `name` -> `name`.2 -> `name`.
+void make_loop(const fs::path& dir, const std::string& name) {
+  fs::create_symlink(name + ".2", dir / name);
+  fs::create_symlink(name, dir / (name + ".2"));
+}
+
+void check_one_line(const Outcome& o, int code, const std::string& line) {
+  INFO(o.err);
+  CHECK_FALSE(o.killed);
+  CHECK(o.code == code);
+  CHECK(count_lines(o.err) == 1);
+  CHECK(o.err == line + "\n");
+}
+
+}  // namespace
+
+TEST_CASE("a symlink loop named by a spec is 'too many levels of symbolic links', located") {
+  const fs::path dir = scratch();
+  make_loop(dir, "loop.png");
+  make_loop(dir, "loop.csv");
+  check_one_line(render_spec(dir, "img", kCanvas + "[[image]]\nfile = \"loop.png\"\nat = [0, 0]\nsize = [4, 4]\n"), 2,
+                 "splinefig render: img.toml:5: image[0].file: cannot open the image file \"./loop.png\" (Too many levels "
+                 "of symbolic links)");
+  check_one_line(render_spec(dir, "pts", kCanvas + "[[polyline]]\npoints_file = \"loop.csv\"\n"), 2,
+                 "splinefig render: pts.toml:5: polyline[0].points_file: cannot open the data file \"./loop.csv\" (Too "
+                 "many levels of symbolic links)");
+  // A missing file is still "no such ... file".
+  check_one_line(render_spec(dir, "gone", kCanvas + "[[polyline]]\npoints_file = \"gone.csv\"\n"), 2,
+                 "splinefig render: gone.toml:5: polyline[0].points_file: no such data file \"./gone.csv\"");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a symlink loop given to a command is 'too many levels of symbolic links'") {
+  const fs::path dir = scratch();
+  make_loop(dir, "loop");
+  check_one_line(run_in(dir, {"diff", "loop", "loop"}), 4,
+                 "splinefig diff: cannot read loop: cannot open the file (Too many levels of symbolic links)");
+  check_one_line(run_in(dir, {"resample", "loop", "-o", "out.png", "--size", "3x3", "--filter", "tent"}), 2,
+                 "splinefig resample: loop: cannot open the file (Too many levels of symbolic links)");
+  check_one_line(run_in(dir, {"eval", "loop", "--basis", "catmull-rom"}), 2,
+                 "splinefig eval: loop: cannot open it (Too many levels of symbolic links)");
+  check_one_line(run_in(dir, {"figures", "--specs", "loop", "--out", "out"}), 2,
+                 "splinefig figures: --specs loop: cannot open it (Too many levels of symbolic links)");
+  check_one_line(run_in(dir, {"figures", "--out", "loop", "--only", "bias"}), 2,
+                 "splinefig figures: --out loop: cannot create the directory (Too many levels of symbolic links)");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a spec in --specs that is a symlink loop fails as that figure, not the whole listing") {
+  const fs::path dir = scratch();
+  fs::create_directories(dir / "specs");
+  make_loop(dir / "specs", "a.toml");
+  const Outcome o = run_in(dir, {"figures", "--specs", "specs", "--out", "out", "--format", "svg"});
+  INFO(o.err);
+  CHECK(o.code == 2);
+  CHECK_THAT(o.err, Catch::StartsWith("splinefig figures: specs/a.toml: cannot read the spec file (Too many levels of "
+                                      "symbolic links)\n"));
+  CHECK(o.err.find("filesystem error") == std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("figures --specs names the path it was given when that is no directory") {
+  const fs::path dir = scratch();
+  write_file(dir / "one.toml", kCanvas);
+  check_one_line(run_in(dir, {"figures", "--specs", "one.toml", "--out", "out"}), 2,
+                 "splinefig figures: --specs one.toml: not a directory (give the directory of the specs)");
+  check_one_line(run_in(dir, {"figures", "--specs", "none", "--out", "out"}), 2,
+                 "splinefig figures: --specs none: no such directory");
+  fs::remove_all(dir);
+}
