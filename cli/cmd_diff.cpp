@@ -30,7 +30,7 @@ struct DiffArgs {
 void check_threshold(const char* flag, double v, bool allow_inf = false) {
   if (std::isnan(v) || v < 0.0 || (!allow_inf && std::isinf(v)))
     throw cli::Failure(std::string(flag) + " must be a " + (allow_inf ? "" : "finite ") +
-                       "number >= 0, got " + std::to_string(v));
+                       "number >= 0, got " + cli::number_text(v));
 }
 
 void check_percent(const char* flag, double v) {

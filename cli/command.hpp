@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -76,9 +77,16 @@ inline void check_input_file(const std::string& path, const std::string& what = 
   if (!fs::is_regular_file(st)) throw Failure(name + ": not a regular file (a FIFO, socket or device)");
 }
 
+// A number said back in a message: the shortest text that reads back as `v` ("1e+308",
+// "1e-308", "64.0001"), neither std::to_string's 300 digits nor its "0.000000".
+inline std::string number_text(double v) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
 // The flags shared by the commands that render figures.
 inline void check_output_scale(double scale) {
-  if (!(scale > 0) || scale > 64) throw Failure("--scale " + std::to_string(scale) + ": must be in (0, 64]");
+  if (!(scale > 0) || scale > 64) throw Failure("--scale " + number_text(scale) + ": must be in (0, 64]");
 }
 // --threads N: 0 is every core; more than kMaxThreads is kMaxThreads (docs/cli.md).
 inline int check_threads(int threads) {
@@ -88,9 +96,8 @@ inline int check_threads(int threads) {
 // --dpi N: spec pixels per inch, 0 (the default) for none, else in [kMinDpi, kMaxDpi].
 inline double check_dpi(double dpi) {
   if (dpi != 0 && !(dpi >= splinefig::kMinDpi && dpi <= splinefig::kMaxDpi)) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "--dpi %g: must be in [%g, %g]", dpi, splinefig::kMinDpi, splinefig::kMaxDpi);
-    throw Failure(buf);
+    throw Failure("--dpi " + number_text(dpi) + ": must be in [" + number_text(splinefig::kMinDpi) + ", " +
+                  number_text(splinefig::kMaxDpi) + "]");
   }
   return dpi;
 }

@@ -22,6 +22,15 @@ Kernel parse_kernel(std::string_view spec) {
   if (spec == "tent") return Kernel::tent();
   if (spec == "lanczos3") return Kernel::lanczos(3);
   if (spec.substr(0, spec.find(':')).empty()) throw SpecError("empty filter name");
+  // The fixed kernels take no parameters: "lanczos3:a=2" is a parameter error, not an unknown name.
+  if (const auto colon = spec.find(':'); colon != std::string_view::npos) {
+    const std::string_view name = spec.substr(0, colon), rest = spec.substr(colon + 1);
+    if (name == "box" || name == "tent" || name == "lanczos3") {
+      if (rest.empty()) throw SpecError(std::string(name) + ": empty parameter list after ':'");
+      throw SpecError(std::string(name) + ": unknown parameter '" + std::string(rest.substr(0, rest.find_first_of("=,"))) +
+                      "' (it takes none" + (name == "lanczos3" ? "; its a is 3" : "") + ")");
+    }
+  }
   try {
     return basis_kernel(parse_basis(spec));
   } catch (const SpecError& e) {

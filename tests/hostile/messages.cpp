@@ -83,3 +83,35 @@ TEST_CASE("figures --specs names the path it was given when that is no directory
                  "splinefig figures: --specs none: no such directory");
   fs::remove_all(dir);
 }
+
+TEST_CASE("a parameter given to a fixed kernel is a parameter error, not an unknown filter") {
+  const fs::path dir = scratch();
+  check_one_line(run_in(dir, {"kernel", "--basis", "lanczos3:a=2"}), 2,
+                 "splinefig kernel: --basis: lanczos3: unknown parameter 'a' (it takes none; its a is 3)");
+  check_one_line(run_in(dir, {"kernel", "--basis", "box:x=1"}), 2,
+                 "splinefig kernel: --basis: box: unknown parameter 'x' (it takes none)");
+  check_one_line(run_in(dir, {"kernel", "--basis", "tent:"}), 2,
+                 "splinefig kernel: --basis: tent: empty parameter list after ':'");
+  write_file(dir / "flt.toml", kCanvas + "filter = \"lanczos3:a=2\"\n");
+  check_one_line(run_in(dir, {"render", "flt.toml", "-o", "flt.png"}), 2,
+                 "splinefig render: flt.toml:4: canvas.filter: lanczos3: unknown parameter 'a' (it takes none; its a is 3)");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a number out of range is said back in its shortest form") {
+  const fs::path dir = scratch();
+  write_file(dir / "s.toml", kCanvas);
+  check_one_line(run_in(dir, {"render", "s.toml", "-o", "s.png", "--scale", "1e308"}), 2,
+                 "splinefig render: --scale 1e+308: must be in (0, 64]");
+  check_one_line(run_in(dir, {"render", "s.toml", "-o", "s.png", "--scale", "-1e-300"}), 2,
+                 "splinefig render: --scale -1e-300: must be in (0, 64]");
+  check_one_line(run_in(dir, {"figures", "--scale", "64.0001", "--out", "out"}), 2,
+                 "splinefig figures: --scale 64.0001: must be in (0, 64]");
+  check_one_line(run_in(dir, {"render", "s.toml", "-o", "s.png", "--dpi", "1e-308"}), 2,
+                 "splinefig render: --dpi 1e-308: must be in [1, 10000]");
+  check_one_line(run_in(dir, {"figures", "--dpi", "10000.0001", "--out", "out"}), 2,
+                 "splinefig figures: --dpi 10000.0001: must be in [1, 10000]");
+  check_one_line(run_in(dir, {"diff", "a.png", "b.png", "--fail", "-0.5"}), 2,
+                 "splinefig diff: --fail must be a finite number >= 0, got -0.5");
+  fs::remove_all(dir);
+}
