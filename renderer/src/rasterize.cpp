@@ -7,10 +7,15 @@
 #include <splinefig/base/huge_pages.hpp>
 #include "raster_item.hpp"
 #include "prepare.hpp"
+#include "work_estimate.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "splinefig/base/parallel.hpp"
 
@@ -58,6 +63,45 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
     }
     if (!more) break;
   }
+}
+
+const char* kind_name(Scene::Item::Kind k) {
+  using K = Scene::Item::Kind;
+  switch (k) {
+    case K::Stroke: return "stroked polyline";
+    case K::Fill: return "filled polygon";
+    case K::Disk: return "disk";
+    case K::Ring: return "stroked circle";
+    case K::Marker: return "marker";
+    case K::Text: return "text";
+    case K::Image: return "image";
+    case K::PathFill: return "filled path";
+    case K::PathStroke: return "stroked path";
+  }
+  return "item";
+}
+
+// How far the exact sweep of the item's shape would go past `limit` crossings: a lower bound on
+// its crossings once it reaches the limit (work_estimate.hpp), else 0. A shape of E edges has at
+// most E (E - 1) / 2 crossings, so only large shapes are looked at.
+double excess_crossings(const Geometry& g, const Prepared& p, double limit) {
+  if (p.raster || p.shape.simple || p.shape.empty()) return 0;
+  double edges = 0;
+  for (std::size_t c = p.shape.chain_begin; c < p.shape.chain_end; ++c)
+    edges += static_cast<double>(g.chains[c].last - g.chains[c].first);
+  if (edges * (edges - 1) / 2 < limit) return 0;
+  const int y0 = static_cast<int>(std::floor(p.shape.ymin)), y1 = static_cast<int>(std::ceil(p.shape.ymax));
+  const double found = crossings_lower_bound(g, p.shape, y0, y1, kBandRows, limit);
+  return found >= limit ? found : 0;
+}
+
+[[noreturn]] void refuse_work(const Scene::Item& item, std::size_t index, double crossings, double limit) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "item %zu (%s): its outline crosses itself at least %.3g times on the canvas; the exact union is "
+                "refused past %.3g crossings (work limit of the sweep, about 0.2 us each)",
+                index + 1, kind_name(item.kind), crossings, limit);
+  throw std::length_error(buf);
 }
 
 }  // namespace
@@ -116,6 +160,7 @@ Image rasterize(const Scene& scene, int threads) {
       p = Prepared{};
       prepare(i, p, geom, 1);
       if (p.row1 <= p.row0) continue;
+      if (const double n = excess_crossings(geom, p, scene.max_crossings_)) refuse_work(items[i], i, n, scene.max_crossings_);
       if (p.raster) {
         composite_raster(*p.raster, comp, img, 0, H);
       } else if (box) {
@@ -144,9 +189,16 @@ Image rasterize(const Scene& scene, int threads) {
     auto run_begin = [&](std::size_t r) { return r * items.size() / runs; };
     for (std::size_t r = 0; r < runs; ++r)
       for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) run_of[i] = static_cast<std::uint32_t>(r);
+    std::vector<double> excess(items.size(), 0.0);
     parallel_for(runs, nthreads, [&](std::size_t r, int) {
-      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) prepare(i, prep[i], geoms[r], nthreads);
+      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) {
+        prepare(i, prep[i], geoms[r], nthreads);
+        if (prep[i].row1 > prep[i].row0) excess[i] = excess_crossings(geoms[r], prep[i], scene.max_crossings_);
+      }
     });
+    // The first item over the limit, whichever thread found it: the same message on any count.
+    for (std::size_t i = 0; i < items.size(); ++i)
+      if (excess[i] > 0) refuse_work(items[i], i, excess[i], scene.max_crossings_);
   }
   // Which items touch which band, in item order.
   std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));

@@ -109,6 +109,11 @@ Scene::Scene(int width, int height, Color background, Kernel filter)
   validate_pixel_filter(filter_);
 }
 
+void Scene::set_max_crossings(double crossings) {
+  if (!(crossings >= 0)) bad("Scene: the crossing limit must be >= 0 (infinity: no limit)");
+  max_crossings_ = crossings;
+}
+
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 Scene::~Scene() = default;

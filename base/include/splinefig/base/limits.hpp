@@ -23,6 +23,11 @@ inline constexpr double kMaxCoordinate = 1e15;
 inline constexpr double kMinDashPeriod = 1e-3;
 inline constexpr double kMaxDashWork = 1 << 20;
 
+// The exact union's work for one drawn item: crossings of its outline with itself on the canvas,
+// each an event of the sweep (about 0.2 us): 2^28 is about a minute on one core. 10^5 uniformly
+// random points on 1024^2, stroked, cross about 4.5e9 times.
+inline constexpr double kMaxSweepCrossings = double(1 << 28);
+
 // Resolution written into PNG, SVG and PDF files, in dots per inch (0 leaves it unset).
 inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
 

@@ -154,6 +154,12 @@ class Scene {
   const Kernel& filter() const { return filter_; }
   BlendSpace blend_space() const { return blend_; }
   void set_blend_space(BlendSpace space) { blend_ = space; }
+  // The work the exact union may take, in crossings of one item's outline with itself on the
+  // canvas (kMaxSweepCrossings by default): rasterize refuses an item past it with
+  // std::length_error, from a lower bound on its crossings found before it is swept (infinity:
+  // no limit).
+  double max_crossings() const { return max_crossings_; }
+  void set_max_crossings(double crossings);
 
   // Every recorded item, in drawing order, as the call that recorded it (for writers of
   // other formats: vector/).
@@ -171,6 +177,7 @@ class Scene {
   Color background_;
   Kernel filter_;
   BlendSpace blend_ = BlendSpace::linear;
+  double max_crossings_ = kMaxSweepCrossings;
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
 };

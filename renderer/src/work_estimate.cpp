@@ -1,0 +1,89 @@
+#include "work_estimate.hpp"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+namespace splinefig::render::detail {
+namespace {
+
+// The number of pairs i < j with v[i] > v[j], sorting v (merge sort, with `tmp` as scratch).
+double count_inversions(std::vector<double>& v, std::vector<double>& tmp) {
+  const std::size_t n = v.size();
+  tmp.resize(n);
+  double count = 0;
+  for (std::size_t width = 1; width < n; width *= 2) {
+    for (std::size_t lo = 0; lo < n; lo += 2 * width) {
+      const std::size_t mid = std::min(lo + width, n), hi = std::min(lo + 2 * width, n);
+      std::size_t i = lo, j = mid, o = lo;
+      while (i < mid && j < hi) {
+        if (v[j] < v[i]) {
+          count += static_cast<double>(mid - i);  // v[j] is below every element left in [i, mid)
+          tmp[o++] = v[j++];
+        } else {
+          tmp[o++] = v[i++];
+        }
+      }
+      while (i < mid) tmp[o++] = v[i++];
+      while (j < hi) tmp[o++] = v[j++];
+    }
+    v.swap(tmp);
+  }
+  return count;
+}
+
+}  // namespace
+
+double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, int band, double stop_at) {
+  if (s.simple || s.empty() || y1 <= y0) return 0;
+  const auto& ch = g.chains;
+  const auto& v = g.verts;
+  struct Active {
+    std::size_t chain, k;  // k: the edge holding the band's top
+  };
+  std::vector<Active> active;
+  std::vector<std::pair<double, double>> spans;  // (x at the band's top, x at its bottom)
+  std::vector<double> bottoms, tmp;
+  // x of chain c at height y, its edges searched from k on by bisection (y ascending: a chain of
+  // a million vertices through 64 bands costs 64 searches, not a walk over its vertices); k is
+  // left at the edge holding y.
+  auto x_at = [&](const Chain& c, std::size_t& k, double y) {
+    std::size_t lo = k, hi = c.last - 1;  // the first edge whose lower end is below y
+    while (lo < hi) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      if (v[mid + 1].y <= y) lo = mid + 1; else hi = mid;
+    }
+    k = lo;
+    const Vec2 a = v[k], b = v[k + 1];
+    if (y <= a.y) return a.x;
+    if (y >= b.y) return b.x;
+    return a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+  };
+  std::size_t next = s.chain_begin;
+  double count = 0;
+  for (int b0 = y0; b0 < y1 && count < stop_at; b0 += band) {
+    const double top = b0, bottom = std::min(b0 + band, y1);
+    std::size_t n = 0;
+    for (const Active& a : active)
+      if (ch[a.chain].ymax > top) active[n++] = a;
+    active.resize(n);
+    for (; next < s.chain_end && ch[next].ymin < bottom; ++next)
+      if (ch[next].ymax > top) active.push_back({next, ch[next].first});
+    spans.clear();
+    for (Active& a : active) {
+      const Chain& c = ch[a.chain];
+      if (c.ymin > top || c.ymax < bottom) continue;
+      const double xt = x_at(c, a.k, top);
+      std::size_t kb = a.k;
+      spans.push_back({xt, x_at(c, kb, bottom)});
+    }
+    if (spans.size() < 2) continue;
+    std::sort(spans.begin(), spans.end());
+    bottoms.resize(spans.size());
+    for (std::size_t i = 0; i < spans.size(); ++i) bottoms[i] = spans[i].second;
+    count += count_inversions(bottoms, tmp);
+  }
+  return count;
+}
+
+}  // namespace splinefig::render::detail
