@@ -176,6 +176,7 @@ const Workload& workload(char id) {
 splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
                          sr::Color ink = {0, 0, 0, 1}) {
   sr::Scene s(size, size, bg);
+  s.set_max_crossings(INFINITY);  // R30k crosses about 4e8 times, past the default work limit
   sr::StrokeStyle st;
   st.width = w.width;
   st.join = w.join;
@@ -188,6 +189,7 @@ splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize
 // The same, handing the points over to the scene (the rvalue overload) instead of copying them.
 splinefig::Image draw_splinefig_moved(Workload&& w, int threads) {
   sr::Scene s(kSize, kSize, {1, 1, 1, 1});
+  s.set_max_crossings(INFINITY);
   sr::StrokeStyle st;
   st.width = w.width;
   st.join = w.join;
