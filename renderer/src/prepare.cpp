@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace splinefig::render::detail {
 namespace {
@@ -167,6 +169,23 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
     }
     case K::Image: break;
   }
+  const std::size_t own_end = g.chains.size();
+  if (it.clip) {
+    // The clip path's chains join the shape's with dir scaled by kClipWeight (sweep.hpp), so the
+    // sweep resolves the intersection; nothing is drawn where either is empty.
+    ChainBuilder cb(g, clip, shift);
+    for (const auto& c : it.clip->path.flatten(kArcTolerance).contours) polygon(c, cb);
+    const std::size_t own = own_end - s.chain_begin, clip_chains = g.chains.size() - own_end;
+    if (own > kMaxClippedChains || clip_chains > kMaxClippedChains)
+      throw std::length_error("a clipped item of " + std::to_string(own) + " chains, or a clip path of " +
+                              std::to_string(clip_chains) + ": at most " + std::to_string(kMaxClippedChains) +
+                              " each (their windings share one integer)");
+    for (std::size_t c = own_end; c < g.chains.size(); ++c) g.chains[c].dir *= kClipWeight;
+    s.clipped = true;
+    s.clip_rule = it.clip->rule;
+    s.simple = false;
+    if (own == 0 || clip_chains == 0) g.chains.resize(s.chain_begin);  // an empty intersection
+  }
   s.chain_end = g.chains.size();
   auto first = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_begin);
   auto last = g.chains.begin() + static_cast<std::ptrdiff_t>(s.chain_end);
@@ -183,6 +202,23 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
     s.xmax = std::max(s.xmax, c->xmax);
     s.ymin = std::min(s.ymin, c->ymin);
     s.ymax = std::max(s.ymax, c->ymax);
+  }
+  if (s.clipped) {  // only where the shape and the clip meet
+    Box own{INFINITY, INFINITY, -INFINITY, -INFINITY}, cut = own;
+    for (auto c = first; c != last; ++c) {
+      Box& b = std::abs(c->dir) == kClipWeight ? cut : own;
+      b = {std::min(b.x0, c->xmin), std::min(b.y0, c->ymin), std::max(b.x1, c->xmax), std::max(b.y1, c->ymax)};
+    }
+    s.xmin = std::max(own.x0, cut.x0);
+    s.ymin = std::max(own.y0, cut.y0);
+    s.xmax = std::min(own.x1, cut.x1);
+    s.ymax = std::min(own.y1, cut.y1);
+    if (!(s.xmin < s.xmax && s.ymin < s.ymax)) {
+      s.chain_end = s.chain_begin;
+      g.chains.resize(s.chain_begin);
+      out.row0 = out.row1 = 0;
+      return;
+    }
   }
   if (s.simple) {
     // Sum of dir * integral of x dy: negative when the left boundaries run down (winding +1).

@@ -16,7 +16,8 @@ namespace splinefig::render {
 namespace {
 
 // Appends with geometric growth into huge-page-advised storage (100k items are tens of MB).
-void add(std::vector<Scene::Item>& items, Scene::Item&& it) {
+void add(std::vector<Scene::Item>& items, Scene::Item&& it, const std::shared_ptr<const ClipRegion>& clip) {
+  it.clip = clip;
   if (items.size() == items.capacity()) reserve_huge(items, std::max<std::size_t>(64, 2 * items.capacity()));
   items.push_back(std::move(it));
 }
@@ -142,7 +143,7 @@ void Scene::stroke_polyline(std::vector<Vec2>&& points, bool closed, const Strok
   it.closed = closed;
   it.stroke = style;
   it.color = color;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) {
@@ -153,7 +154,7 @@ void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRul
   it.contours = contours;
   it.rule = rule;
   it.color = color;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 void Scene::fill_circle(Vec2 centre, double radius, Color color) {
@@ -166,7 +167,7 @@ void Scene::fill_circle(Vec2 centre, double radius, Color color) {
   it.centre = centre;
   it.radius = radius;
   it.color = color;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) {
@@ -181,7 +182,7 @@ void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, 
   it.radius = radius;
   it.stroke = style;
   it.color = color;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
@@ -195,11 +196,19 @@ void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
   it.centre = centre;
   it.radius = size;
   it.color = fill;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
+
+void Scene::set_clip(const Path& path, FillRule rule) {
+  check_points(path.points(), "set_clip", "path");
+  clip_ = std::make_shared<const ClipRegion>(ClipRegion{path, rule});
+}
+
+void Scene::clear_clip() { clip_.reset(); }
 
 void Scene::image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling sampling) {
   if (!image) bad("image: no image");
+  if (clip_) bad("image: images are not clipped; clear_clip() first");
   if (image->channels != 4 || image->width < 1 || image->height < 1 ||
       image->pixels.size() != image->pixel_count() * 4)
     bad("image: the image must be RGBA with pixels (" + std::to_string(image->width) + " x " +
@@ -211,7 +220,7 @@ void Scene::image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling
   Item it;
   it.kind = Item::Kind::Image;
   it.raster = std::make_shared<const Item::Raster>(Item::Raster{std::move(image), p0, p1, sampling == Sampling::Nearest});
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 void Scene::fill_path(const Path& path, FillRule rule, Color color) {
@@ -222,7 +231,7 @@ void Scene::fill_path(const Path& path, FillRule rule, Color color) {
   it.path = std::make_shared<const Path>(path);
   it.rule = rule;
   it.color = color;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 void Scene::stroke_path(const Path& path, const StrokeStyle& style, Color color) {
@@ -234,11 +243,13 @@ void Scene::stroke_path(const Path& path, const StrokeStyle& style, Color color)
   it.path = std::make_shared<const Path>(path);
   it.stroke = style;
   it.color = color;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 void Scene::visit(SceneVisitor& v) const {
   using K = Item::Kind;
+  for (const Item& it : *items_)
+    if (it.clip) bad("the scene has clipped items, which only the rasterizer draws (SVG and PDF do not carry clip paths)");
   for (const Item& it : *items_) {
     switch (it.kind) {
       case K::Stroke: v.stroke_polyline(it.contours[0], it.closed, it.stroke, it.color); break;
@@ -269,7 +280,7 @@ void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
   it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style, text_path(text, anchor, style)});
   it.centre = anchor;
   it.color = style.color;
-  add(*items_, std::move(it));
+  add(*items_, std::move(it), clip_);
 }
 
 }  // namespace splinefig::render

@@ -9,6 +9,12 @@
 
 namespace splinefig::render {
 
+// A clip path: what the items recorded after Scene::set_clip are intersected with, exactly.
+struct ClipRegion {
+  Path path;
+  FillRule rule = FillRule::NonZero;
+};
+
 struct Scene::Item {
   enum class Kind { Stroke, Fill, Disk, Ring, Marker, Text, Image, PathFill, PathStroke } kind = Kind::Fill;
   std::vector<std::vector<Vec2>> contours;  // Fill: the contours; Stroke: contours[0] the path
@@ -32,6 +38,7 @@ struct Scene::Item {
   };
   std::shared_ptr<const Raster> raster;  // Image only
   std::shared_ptr<const Path> path;      // PathFill, PathStroke only
+  std::shared_ptr<const ClipRegion> clip;  // the clip in effect when recorded; none: null
 };
 
 }  // namespace splinefig::render

@@ -53,9 +53,17 @@ void sort_small(It first, It last, Less less = {}) {
   }
 }
 
+// A clip path's chains are the shape's own, with dir scaled by kClipWeight: the winding w of a
+// gap is then ws + kClipWeight * wc (the shape's and the clip's windings, |ws| < kClipWeight / 2
+// while the shape has fewer chains than that), so one sweep resolves the intersection exactly.
+inline constexpr int kClipShift = 16, kClipWeight = 1 << kClipShift;
+inline constexpr std::size_t kMaxClippedChains = kClipWeight / 2 - 1;  // each part; |wc| then fits too
+
 struct Shape {
   std::size_t chain_begin = 0, chain_end = 0;  // in Geometry::chains, sorted by ymin
   FillRule rule = FillRule::NonZero;
+  bool clipped = false;                         // chains with |dir| = kClipWeight are a clip path's
+  FillRule clip_rule = FillRule::NonZero;
   bool simple = false;  // |winding| <= 1 everywhere (a convex or simple contour): no sweep needed
   int orient = 1;       // for simple shapes: the winding number inside (+1 or -1)
   double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
@@ -72,6 +80,8 @@ class StripSweep {
     active_.clear();
     cursor_.clear();
     first_end_ = INFINITY;
+    mask_ = s.rule == FillRule::EvenOdd ? 1 : ~0;
+    clip_mask_ = s.clip_rule == FillRule::EvenOdd ? 1 : ~0;
   }
 
   // Strips must come in increasing y order. Returns false once nothing is left below.
@@ -118,7 +128,13 @@ class StripSweep {
   void rewalk(std::size_t lo, std::size_t hi, double y, Sink& sink);
   void check_pair(std::size_t p, double y);
   void push_event(double y, std::uint32_t type, std::uint32_t node, std::uint32_t stamp = 0);
-  bool inside(int w) const { return s_->rule == FillRule::EvenOdd ? (w & 1) != 0 : w != 0; }
+  // Whether a gap of winding w is filled: the fill rule of w, or, for a clipped shape, the
+  // shape's rule of its part and the clip's rule of the clip's part.
+  bool inside(int w) const {
+    if (!s_->clipped) return (w & mask_) != 0;
+    const int wc = (w + kClipWeight / 2) >> kClipShift, ws = w - wc * kClipWeight;
+    return (ws & mask_) != 0 && (wc & clip_mask_) != 0;
+  }
 
   const Geometry* g_ = nullptr;
   const Shape* s_ = nullptr;
@@ -177,7 +193,7 @@ class StripSweep {
   std::vector<std::pair<double, std::uint32_t>> ends_;    // spans ending inside the strip, by y
   std::size_t ic0_ = 0;              // the cluster's first index in byx_
   int left_ = 0;                     // the winding left of the cluster at the current height
-  int mask_ = ~0;                    // inside(w) is (w & mask_) != 0
+  int mask_ = ~0, clip_mask_ = ~0;   // the fill rules as masks: nonzero ~0, even-odd 1
 };
 
 // Drops finished chains, adds those starting before the strip's bottom. False if none is left.
@@ -264,7 +280,6 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
   const std::size_t n = c1 - c0;
   ic0_ = c0;
   left_ = base_;
-  mask_ = s_->rule == FillRule::EvenOdd ? 1 : ~0;
   nodes_.resize(n);
   pos_.assign(n, kNone);
   ord_.clear();
@@ -436,7 +451,7 @@ inline void StripSweep::check_pair(std::size_t p, double y) {
 template <class Sink>
 void StripSweep::set_status(std::uint32_t id, int w_left, double y, Sink& sink) {
   Node& N = nodes_[id];
-  const bool before = (w_left & mask_) != 0, after = (N.w & mask_) != 0;
+  const bool before = inside(w_left), after = inside(N.w);
   const int sign = before == after ? 0 : (after ? 1 : -1);
   if (sign == N.sign) return;
   if (N.sign != 0) emit(N.open_k, N.chain, N.open_y, y, N.sign, sink);

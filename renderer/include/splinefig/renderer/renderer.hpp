@@ -148,6 +148,13 @@ class Scene {
   enum class Sampling { Nearest, Bilinear };
   void image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling sampling);
 
+  // Every shape and text item recorded from now on is drawn intersected with the region the
+  // path encloses under `rule`, exactly (one sweep resolves shape and clip together), until
+  // clear_clip() or the next set_clip. An image cannot be recorded while a clip is set, and SVG
+  // and PDF writers refuse a scene with clipped items (visit throws std::invalid_argument).
+  void set_clip(const Path& path, FillRule rule = FillRule::NonZero);
+  void clear_clip();
+
   int width() const { return width_; }
   int height() const { return height_; }
   Color background() const { return background_; }
@@ -178,6 +185,7 @@ class Scene {
   Kernel filter_;
   BlendSpace blend_ = BlendSpace::linear;
   double max_crossings_ = kMaxSweepCrossings;
+  std::shared_ptr<const struct ClipRegion> clip_;  // scene_item.hpp
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
 };
