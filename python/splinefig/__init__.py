@@ -407,6 +407,22 @@ class Scene:
             _library("codes", self._s.fill_path, v, c, r, col)
         return self
 
+    def set_clip(self, vertices: Any, codes: Any = None, *, rule: str = "nonzero") -> "Scene":
+        """Clips every shape and text item added from now on to the region a path (vertices and
+        codes as fill_path) encloses under `rule`, exactly, until clear_clip(). Images cannot
+        be added while a clip is set."""
+        v, c = self._path_args(vertices, codes)
+        r = _choice(rule, "rule", ("nonzero", "evenodd"))
+        with self._lock:
+            _library("codes", self._s.set_clip, v, c, r)
+        return self
+
+    def clear_clip(self) -> "Scene":
+        """Ends the clip set by set_clip: later items are not clipped."""
+        with self._lock:
+            self._s.clear_clip()
+        return self
+
     def stroke_path(self, vertices: Any, codes: Any = None, *, color: Any = "#000000", width: float = 1.0,
                     join: str = "miter", cap: str = "butt", miter_limit: float = 4.0,
                     dashes: Sequence[float] = (), dash_offset: float = 0.0) -> "Scene":

@@ -77,8 +77,10 @@ class _Target:
     """Where items go: the figure's scene, or a clip layer (a scene over an integer rectangle of
     the canvas, composited into the figure's scene when it is closed)."""
 
-    def __init__(self, scene: Scene, x0: int = 0, y0: int = 0, key: Any = None, clip_path: Any = None) -> None:
+    def __init__(self, scene: Scene, x0: int = 0, y0: int = 0, key: Any = None, clip_path: Any = None,
+                 masked: bool = False) -> None:
         self.scene, self.core, self.x0, self.y0, self.key, self.clip_path = scene, scene._s, x0, y0, key, clip_path
+        self.masked = masked  # clip_path is applied as a coverage mask when the layer is closed
         self.items = 0
 
 
@@ -127,8 +129,11 @@ class RendererSplinefig(RendererBase):
                min(int(math.floor(x2 + 0.5)), self.width), min(int(math.floor(H - y1 + 0.5)), H))
         return box
 
-    def _target(self, gc) -> Optional[_Target]:
-        """The target for gc's clip, or None when nothing can show."""
+    def _target(self, gc, raster: bool = False) -> Optional[_Target]:
+        """The target for gc's clip, or None when nothing can show. Paths and text are clipped
+        by a clip path exactly (the layer's scene intersects them with it); rasters (images,
+        Gouraud meshes), which the renderer does not clip, go to a layer multiplied by the clip
+        path's exact coverage."""
         box = self._clip_box(gc)
         cp, cp_trans = gc.get_clip_path()
         clip_path = None
@@ -145,12 +150,17 @@ class RendererSplinefig(RendererBase):
         if clip_path is None and box == (0, 0, self.width, self.height):
             self._close_layer()
             return self._main
-        key = (box, None if clip_path is None else (clip_path.vertices.tobytes(), clip_path.codes.tobytes()))
+        masked = raster and clip_path is not None
+        key = (box, None if clip_path is None else (clip_path.vertices.tobytes(), clip_path.codes.tobytes()), masked)
         if self._layer is not None and self._layer.key == key:
             return self._layer
         self._close_layer()
         w, h = box[2] - box[0], box[3] - box[1]
-        self._layer = _Target(Scene(w, h, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend), box[0], box[1], key, clip_path)
+        self._layer = _Target(Scene(w, h, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend), box[0], box[1], key, clip_path,
+                              masked)
+        if clip_path is not None and not masked:
+            v = np.ascontiguousarray(clip_path.vertices - (box[0], box[1]), dtype=np.float64)
+            self._layer.core.set_clip(v, self._codes(clip_path), "nonzero")
         return self._layer
 
     def _composite(self, into: _Target, t: _Target, mask: Optional[np.ndarray] = None) -> None:
@@ -177,7 +187,7 @@ class RendererSplinefig(RendererBase):
         if t is None or t.items == 0:
             return
         mask = None
-        if t.clip_path is not None:
+        if t.masked:
             h, w = t.scene.height, t.scene.width
             mask = self._coverage(t.clip_path, t.x0, t.y0, w, h)
         self._composite(self._main, t, mask)
@@ -349,7 +359,7 @@ class RendererSplinefig(RendererBase):
         interpolates sRGB values) from their corners, sampled at pixel centres and weighted by
         each triangle's exact area coverage. The triangles of one call are summed before they
         are composited, so the seams of a mesh that tiles the plane are exact (no light lines)."""
-        t = self._target(gc)
+        t = self._target(gc, raster=True)
         if t is None:
             return
         tri = np.asarray(triangles_array, dtype=np.float64).reshape(-1, 3, 2)
@@ -402,7 +412,7 @@ class RendererSplinefig(RendererBase):
         t.items += 1
 
     def draw_image(self, gc, x, y, im, transform=None):
-        t = self._target(gc)
+        t = self._target(gc, raster=True)
         if t is None:
             return
         a = np.asarray(im)[::-1]  # matplotlib hands the rows bottom to top

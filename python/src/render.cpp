@@ -185,6 +185,11 @@ void bind_render(py::module_& m) {
                     pick<render::FillRule>(rule, "rule", {{"nonzero", render::FillRule::NonZero}, {"evenodd", render::FillRule::EvenOdd}}),
                     color_of(color));
       })
+      .def("set_clip", [](render::Scene& s, const f64array& vertices, const u8array& codes, const std::string& rule) {
+        s.set_clip(path_of(vertices, codes),
+                   pick<render::FillRule>(rule, "rule", {{"nonzero", render::FillRule::NonZero}, {"evenodd", render::FillRule::EvenOdd}}));
+      })
+      .def("clear_clip", &render::Scene::clear_clip)
       .def("stroke_path", [](render::Scene& s, const f64array& vertices, const u8array& codes, const std::array<float, 4>& color, double width,
                              const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes, double dash_offset) {
         s.stroke_path(path_of(vertices, codes), stroke_of(width, join, cap, miter_limit, std::move(dashes), dash_offset), color_of(color));
