@@ -3,6 +3,10 @@
 // exact filtered-scanline size that IHDR implies (section 7.2 for the row layout, 8.2 for the
 // Adam7 passes). libpng treats "not enough image data" as a benign error, so a PNG cut inside
 // its pixel data can decode to garbage rows without failing: this check is what catches it.
+// It also refuses what libpng would stop at with an error of its own (chunk types that are not
+// letters, an unknown critical chunk, a second IHDR or PLTE, a palette image without a valid
+// PLTE before its pixels, a row filter type over 4): libpng prints those on stderr besides
+// failing, a second line next to ours, so they must not reach it.
 #include "png_check.hpp"
 #include "origin.hpp"
 
@@ -11,6 +15,7 @@
 #include <zlib.h>
 
 #include <array>
+#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -50,19 +55,55 @@ std::uint64_t pass_bytes(std::uint64_t w, std::uint64_t h, std::uint64_t bits_pe
   return h * (1 + (w * bits_per_pixel + 7) / 8);
 }
 
-std::uint64_t expected_image_bytes(std::uint32_t width, std::uint32_t height, int bits_per_pixel, bool adam7) {
-  if (!adam7) return pass_bytes(width, height, std::uint64_t(bits_per_pixel));
+// The passes of the image's filtered scanlines (one, or Adam7's seven less the empty ones):
+// bytes per row (the filter byte included) and rows.
+struct Pass {
+  std::uint64_t row_bytes, rows;
+};
+
+std::vector<Pass> scanline_passes(std::uint32_t width, std::uint32_t height, int bits_per_pixel, bool adam7) {
+  std::vector<Pass> passes;
+  auto add = [&](std::uint64_t w, std::uint64_t h) {
+    if (w > 0 && h > 0) passes.push_back({1 + (w * std::uint64_t(bits_per_pixel) + 7) / 8, h});
+  };
+  if (!adam7) {
+    add(width, height);
+    return passes;
+  }
   // Adam7 passes: starting column/row and step of each of the seven passes.
   static constexpr int xs[7] = {0, 4, 0, 2, 0, 1, 0}, ys[7] = {0, 0, 4, 0, 2, 0, 1};
   static constexpr int dx[7] = {8, 8, 4, 4, 2, 2, 1}, dy[7] = {8, 8, 8, 4, 4, 2, 2};
+  for (int p = 0; p < 7; ++p)
+    add(width > std::uint32_t(xs[p]) ? (width - xs[p] + dx[p] - 1) / dx[p] : 0,
+        height > std::uint32_t(ys[p]) ? (height - ys[p] + dy[p] - 1) / dy[p] : 0);
+  return passes;
+}
+
+std::uint64_t expected_image_bytes(const std::vector<Pass>& passes) {
   std::uint64_t total = 0;
-  for (int p = 0; p < 7; ++p) {
-    const std::uint64_t w = width > std::uint32_t(xs[p]) ? (width - xs[p] + dx[p] - 1) / dx[p] : 0;
-    const std::uint64_t h = height > std::uint32_t(ys[p]) ? (height - ys[p] + dy[p] - 1) / dy[p] : 0;
-    total += pass_bytes(w, h, std::uint64_t(bits_per_pixel));
-  }
+  for (const Pass& p : passes) total += p.row_bytes * p.rows;
   return total;
 }
+
+// The stream offset of each row's filter byte, in order.
+class RowStarts {
+ public:
+  explicit RowStarts(std::vector<Pass> passes) : passes_(std::move(passes)) {}
+  bool done() const { return pass_ >= passes_.size(); }
+  std::uint64_t next() const { return offset_; }
+  void advance() {
+    offset_ += passes_[pass_].row_bytes;
+    if (++row_ == passes_[pass_].rows) {
+      row_ = 0;
+      ++pass_;
+    }
+  }
+
+ private:
+  std::vector<Pass> passes_;
+  std::size_t pass_ = 0;
+  std::uint64_t row_ = 0, offset_ = 0;
+};
 
 [[noreturn]] void bad(const std::string& path, const std::string& why) {
   throw UnreadableImage(path + ": " + why);
@@ -124,8 +165,10 @@ void check_png_structure(const std::string& path) {
   std::uint32_t width = 0, height = 0;
   int bits_per_pixel = 0;
   bool adam7 = false;
+  int colour_type = 0;
   std::uint64_t expected = 0, produced = 0;
-  bool stream_end = false;
+  bool stream_end = false, have_plte = false;
+  RowStarts rows({});
 
   z_stream zs{};
   if (inflateInit(&zs) != Z_OK) bad(path, "zlib initialisation failed");
@@ -152,6 +195,9 @@ void check_png_structure(const std::string& path) {
     if (data.size() - pos - 12 < length)
       bad(path, "truncated PNG (chunk " + tname + " at byte " + std::to_string(pos) + " ends past the end of the file)");
     const unsigned char* body = &data[pos + 8];
+    for (int i = 0; i < 4; ++i)
+      if (!std::isalpha(type[i]) || type[i] >= 0x80)
+        bad(path, "corrupt PNG (chunk type " + tname + " at byte " + std::to_string(pos) + " is not four letters)");
     const std::uint32_t crc_stored = be32(body + length);
     uLong crc = crc32(0L, Z_NULL, 0);
     crc = crc32(crc, type, 4);
@@ -162,7 +208,8 @@ void check_png_structure(const std::string& path) {
       if (tname != "IHDR" || length != 13) bad(path, "corrupt PNG (first chunk is not IHDR)");
       width = be32(body);
       height = be32(body + 4);
-      const int depth = body[8], colour_type = body[9];
+      const int depth = body[8];
+      colour_type = body[9];
       if (width == 0 || height == 0 || width > 0x7fffffffu || height > 0x7fffffffu)
         bad(path, "corrupt PNG (image size " + std::to_string(width) + " x " + std::to_string(height) + ")");
       if (!valid_depth(colour_type, depth)) bad(path, "corrupt PNG (invalid bit depth or colour type)");
@@ -170,10 +217,20 @@ void check_png_structure(const std::string& path) {
       if (body[10] != 0 || body[11] != 0 || body[12] > 1) bad(path, "corrupt PNG (unknown compression, filter or interlace method)");
       bits_per_pixel = png_channels(colour_type) * depth;
       adam7 = body[12] == 1;
-      expected = expected_image_bytes(width, height, bits_per_pixel, adam7);
+      const std::vector<Pass> passes = scanline_passes(width, height, bits_per_pixel, adam7);
+      expected = expected_image_bytes(passes);
+      rows = RowStarts(passes);
       have_ihdr = true;
+    } else if (tname == "IHDR") {
+      bad(path, "corrupt PNG (a second IHDR chunk)");
+    } else if (tname == "PLTE") {
+      if (have_plte) bad(path, "corrupt PNG (a second PLTE chunk)");
+      if (!idat_seen && (length == 0 || length % 3 != 0 || length > 3 * 256))
+        bad(path, "corrupt PNG (PLTE of " + std::to_string(length) + " bytes: not 1 to 256 three-byte entries)");
+      have_plte = true;
     } else if (tname == "IDAT") {
       if (idat_done) bad(path, "corrupt PNG (IDAT chunks are not consecutive)");
+      if (colour_type == 3 && !have_plte) bad(path, "corrupt PNG (a palette image with no PLTE chunk before its pixel data)");
       idat_seen = true;
       zs.next_in = const_cast<unsigned char*>(body);
       zs.avail_in = length;
@@ -181,7 +238,13 @@ void check_png_structure(const std::string& path) {
         zs.next_out = sink.data();
         zs.avail_out = unsigned(sink.size());
         const int rc = inflate(&zs, Z_NO_FLUSH);
+        const std::uint64_t from = produced;
         produced += sink.size() - zs.avail_out;
+        // Each row's filter type, 0 (none) to 4 (Paeth).
+        for (; !rows.done() && rows.next() < produced; rows.advance())
+          if (const unsigned filter = sink[std::size_t(rows.next() - from)]; filter > 4)
+            bad(path, "corrupt PNG (row filter type " + std::to_string(filter) + " at byte " + std::to_string(rows.next()) +
+                          " of the pixel data, not 0 to 4)");
         if (rc == Z_STREAM_END) {
           stream_end = true;
         } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
@@ -191,6 +254,9 @@ void check_png_structure(const std::string& path) {
       }
     } else {
       if (idat_seen) idat_done = true;
+      // A critical chunk (first letter upper case) this decoder does not know cannot be skipped.
+      if (std::isupper(type[0]) && tname != "IEND")
+        bad(path, "corrupt PNG (unknown critical chunk " + tname + ")");
       if (tname == "IEND") {
         have_iend = true;
         break;
