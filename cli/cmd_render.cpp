@@ -1,6 +1,7 @@
 // `splinefig render SPEC.toml -o OUT.(png|exr|svg|pdf) [--scale S] [--dpi N] [--threads N]`: one
 // figure spec (docs/spec.md) rendered to one file, the format chosen by the extension.
 #include "command.hpp"
+#include "stdio.hpp"
 
 #include <splinefig/figures/batch.hpp>
 #include <splinefig/figures/figure.hpp>
@@ -10,11 +11,12 @@
 
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 
 namespace {
 
 struct RenderArgs {
-  std::string spec, out;
+  std::string spec, out, format;
   double scale = 1;
   double dpi = 0;
   int threads = 0;
@@ -23,9 +25,11 @@ struct RenderArgs {
 const splinefig::cli::Registration reg{
     "render", "Render one TOML figure spec to a PNG, EXR, SVG or PDF file", [](CLI::App& app) {
       auto a = std::make_shared<RenderArgs>();
-      app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md)")->type_name("PATH")->required();
-      app.add_option("-o,--output", a->out, "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves)")
+      app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md); - reads it from stdin, its relative paths then from the current directory")->type_name("PATH")->required();
+      app.add_option("-o,--output", a->out, "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves); - writes to stdout")
           ->type_name("PATH")->required();
+      app.add_option("--format", a->format, "Output format png, exr, svg or pdf, for -o - (default png) or a name without one of those extensions")
+          ->type_name("NAME");
       app.add_option("--scale", a->scale, "Output pixels per spec pixel")->capture_default_str();
       app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
           ->type_name("FLOAT")->capture_default_str();
@@ -34,16 +38,29 @@ const splinefig::cli::Registration reg{
       return splinefig::cli::Runner([a] {
         using splinefig::cli::Failure;
         namespace fig = splinefig::figures;
-        const auto format = fig::format_of_path(a->out);
+        const bool to_stdout = splinefig::cli::is_stdio(a->out), from_stdin = splinefig::cli::is_stdio(a->spec);
+        std::optional<fig::Format> format = to_stdout ? std::nullopt : fig::format_of_path(a->out);
+        if (!a->format.empty()) {
+          const auto named = fig::format_named(a->format);
+          if (!named) throw Failure("--format " + splinefig::cli::printable(a->format) + ": not one of png, exr, svg, pdf");
+          if (format && *format != *named)
+            throw Failure("--format " + a->format + ": -o " + a->out + " names another format (." +
+                          fig::extension(*format) + ")");
+          format = named;
+        }
+        if (!format && to_stdout) format = fig::Format::png;
         if (!format)
-          throw Failure("-o " + a->out + ": the output must end in .png, .exr, .svg or .pdf");
-        if (splinefig::same_file(a->out, a->spec)) throw Failure("-o " + a->out + ": it is the spec " + a->spec);
+          throw Failure("-o " + a->out + ": the output must end in .png, .exr, .svg or .pdf (or give --format)");
+        if (!to_stdout && !from_stdin && splinefig::same_file(a->out, a->spec))
+          throw Failure("-o " + a->out + ": it is the spec " + a->spec);
         splinefig::cli::check_output_scale(a->scale);
         const int threads = splinefig::cli::check_threads(a->threads);
         const double dpi = splinefig::cli::check_dpi(a->dpi);
         try {
-          fig::FigureSpec spec = fig::load_spec(a->spec);
-          if (std::string bad = fig::output_over_input({a->out}, {a->spec}); !bad.empty()) throw Failure("-o " + bad + " (write to another file)");
+          fig::FigureSpec spec = from_stdin ? fig::parse_spec(splinefig::cli::read_stdin_bytes("the spec", splinefig::kMaxSpecBytes), "stdin", ".")
+                                            : fig::load_spec(a->spec);
+          if (std::string bad = to_stdout || from_stdin ? "" : fig::output_over_input({a->out}, {a->spec}); !bad.empty())
+            throw Failure("-o " + bad + " (write to another file)");
           fig::check_scaled_canvas(spec, a->scale, "--scale");
           const fig::FigureScene f = fig::figure_scene(spec, a->scale);
           fig::FigureFileOptions w;
@@ -54,7 +71,19 @@ const splinefig::cli::Registration reg{
           w.title = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
           w.date = fig::source_date_epoch();
           std::optional<splinefig::Image> raster;
-          fig::write_figure_file(f, a->out, *format, w, raster);
+          try {
+            splinefig::cli::Scratch scratch;
+            const std::string path = to_stdout ? scratch.file(std::string("stdout.") + fig::extension(*format)) : a->out;
+            try {
+              fig::write_figure_file(f, path, *format, w, raster);
+            } catch (const splinefig::UnwritableFile& e) {
+              if (!to_stdout) throw;
+              throw Failure(splinefig::cli::said_as(e.what(), path, "stdout"), 4);
+            }
+            if (to_stdout) splinefig::cli::file_to_stdout(path);
+          } catch (const std::length_error& e) {  // an item past the rasterizer's work limit
+            throw Failure(a->spec + ": " + e.what());
+          }
         } catch (const fig::SpecFileError& e) {
           throw Failure(e.what());
         }
