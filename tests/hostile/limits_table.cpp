@@ -54,6 +54,8 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"image read: values (pixels x channels)", power_of_two((long long)(f::kMaxImageValues))},
       {"image read: data window origin (EXR data window, PNG `oFFs`)", power_of_two(f::kMaxImageOrigin) + " either way"},
       {"dash work of one stroke: dashes near the canvas x (1 + width / period)^2", power_of_two((long long)(f::kMaxDashWork))},
+      {"the exact union's work for one drawn item: crossings of its outline with itself on the canvas",
+       power_of_two((long long)(f::kMaxSweepCrossings)) + " (`Scene::set_max_crossings` changes it)"},
       {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},
   };
   for (const auto& [quantity, limit] : expected) {
