@@ -126,7 +126,12 @@ std::string index_json(const std::vector<FigureInfo>& figures) {
     Json axes = Json::array();
     for (const AxesInfo& ax : f.axes) {
       Json series = Json::array();
-      for (const SeriesInfo& si : ax.series) series.push_back({{"label", si.label}, {"color", si.color}, {"kind", si.kind}});
+      for (const SeriesInfo& si : ax.series) {
+        Json entry = {{"label", si.label}, {"color", si.color}, {"kind", si.kind}, {"line", si.line}, {"dash", si.dash}};
+        if (!si.marker.empty()) entry["marker"] = si.marker;
+        if (si.piece) entry["piece"] = true;
+        series.push_back(std::move(entry));
+      }
       axes.push_back({{"pixel_box", ax.pixel_box},
                       {"x_range", ax.x_range},
                       {"y_range", ax.y_range},
@@ -165,9 +170,14 @@ std::vector<FigureInfo> read_index_json(const std::string& text) {
         ax.y_range = numbers_of<2>(a, "y_range");
         ax.x_scale = scale_of(a, "x_scale");
         ax.y_scale = scale_of(a, "y_scale");
-        for (const Json& s : a.at("series"))
-          ax.series.push_back(
-              {s.at("label").get<std::string>(), s.at("color").get<std::string>(), s.at("kind").get<std::string>()});
+        for (const Json& s : a.at("series")) {
+          SeriesInfo si{s.at("label").get<std::string>(), s.at("color").get<std::string>(), s.at("kind").get<std::string>()};
+          si.line = s.value("line", true);
+          si.dash = s.value("dash", std::vector<double>{});
+          si.marker = s.value("marker", std::string{});
+          si.piece = s.value("piece", false);
+          ax.series.push_back(std::move(si));
+        }
         info.axes.push_back(std::move(ax));
       }
       figures.push_back(std::move(info));

@@ -53,6 +53,17 @@ render::Color palette_color(std::string_view name, int i, int n) {
   return viridis(kViridisDarkEnough * t);
 }
 
+render::DashPattern cycle_dash(int i) {
+  switch (((i % kDashCycle) + kDashCycle) % kDashCycle) {
+    case 1: return {8, 4};
+    case 2: return {2, 3};
+    case 3: return {8, 3, 2, 3};
+    case 4: return {16, 4};
+    case 5: return {8, 3, 2, 3, 2, 3};
+    default: return {};
+  }
+}
+
 std::string to_hex(render::Color c) {
   auto q = [](float v) { return static_cast<int>(std::lround(std::clamp(splinefig::linear_to_srgb(v), 0.0f, 1.0f) * 255.0f)); };
   char buf[8];

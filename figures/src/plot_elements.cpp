@@ -83,6 +83,7 @@ class ElementPainter {
         p(p),
         occ(occ),
         palette_(ax.palette),
+        dash_cycle_(ax.dash_cycle),
         family_(static_cast<int>(std::count_if(ax.elements.begin(), ax.elements.end(), needs_palette))),
         series_(series),
         legend_(legend) {}
@@ -93,15 +94,24 @@ class ElementPainter {
   Painter& p;
   Occupancy& occ;
 
-  // The element's own colour, else the next colour of the axes palette.
-  Color pick(const std::optional<Color>& c) { return c ? *c : palette_color(palette_, next_++, family_); }
+  // The element's own colour, else the next colour of the axes palette and, for a solid stroke,
+  // the dash pattern of the same place in the style cycle (palette.hpp), drawn with butt caps.
+  Color pick(const std::optional<Color>& c, render::StrokeStyle& st) {
+    if (c) return *c;
+    const int i = next_++;
+    if (dash_cycle_ && st.dashes.empty()) {
+      st.dashes = cycle_dash(i);
+      if (!st.dashes.empty()) st.cap = render::Cap::Butt;
+    }
+    return palette_color(palette_, i, family_);
+  }
 
   // Records a labelled element for index.json and the legend, or for an inline label next to
   // `at_point` (else next to the middle of `pts`).
   void label(const Labelling& l, const Entry& entry, const std::string& kind, const std::vector<Vec2>& pts,
              std::optional<Vec2> at_point) {
     if (l.label.empty()) return;
-    series_.push_back({l.label, to_hex(entry.color), kind});
+    series_.push_back(info(l.label, entry, kind));
     if (l.in_legend) {
       legend_.push_back(entry);
       return;
@@ -112,8 +122,10 @@ class ElementPainter {
     if (!il.candidates.empty()) inline_.push_back(std::move(il));
   }
   // A label of one kernel piece, always inline.
-  void piece_label(const std::string& text, Color c, const std::vector<Vec2>& piece) {
-    series_.push_back({text, to_hex(c), "kernel"});
+  void piece_label(const std::string& text, Color c, const render::StrokeStyle& st, const std::vector<Vec2>& piece) {
+    SeriesInfo si = info(text, {text, c, st, true, false, false, render::Marker::Circle, 6}, "kernel");
+    si.piece = true;
+    series_.push_back(std::move(si));
     inline_.push_back({text, c, middle_points(piece, 0.25, 0.75, 7), std::nullopt});
   }
 
@@ -153,7 +165,17 @@ class ElementPainter {
   }
 
  private:
+  static SeriesInfo info(const std::string& label, const Entry& e, const std::string& kind) {
+    static constexpr const char* kMarkers[] = {"circle", "square", "diamond", "cross", "plus"};
+    SeriesInfo si{label, to_hex(e.color), kind};
+    si.line = e.line;
+    if (e.line) si.dash.assign(e.style.dashes.begin(), e.style.dashes.end());
+    if (e.markers) si.marker = kMarkers[static_cast<int>(e.marker)];
+    return si;
+  }
+
   std::string palette_;
+  bool dash_cycle_;
   int family_, next_ = 0;
   std::vector<SeriesInfo>& series_;
   std::vector<Entry>& legend_;
@@ -162,10 +184,11 @@ class ElementPainter {
 
 void draw_curve(const CurveElement& c, const Curve& curve, ElementPainter& d) {
   std::vector<Vec2> pts = sample_curve(curve, d.map, d.tol);
-  const Color color = d.pick(c.color);
+  render::StrokeStyle stroke = c.stroke;
+  const Color color = d.pick(c.color, stroke);
   const bool closed = c.ends == Ends::closed;
   if (closed && pts.size() > 2) pts.pop_back();
-  d.stroke(curve_path(curve, d.map), pts, closed, c.stroke, color);
+  d.stroke(curve_path(curve, d.map), pts, closed, stroke, color);
   if (c.show_knots)
     for (Vec2 k : c.knots) {
       Vec2 q = d.map(k);
@@ -189,7 +212,7 @@ void draw_curve(const CurveElement& c, const Curve& curve, ElementPainter& d) {
     evaluate(curve, std::clamp(*c.label.label_at, 0.0, static_cast<double>(curve.segments())), 0, xy);
     at = d.map({xy[0], xy[1]});
   }
-  Entry e{c.label.label, color, c.stroke, true, c.marks > 0, false, render::Marker::Circle, c.mark_size};
+  Entry e{c.label.label, color, stroke, true, c.marks > 0, false, render::Marker::Circle, c.mark_size};
   d.label(c.label, e, "curve", pts, at);
 }
 
@@ -201,7 +224,8 @@ void draw_kernel(const KernelElement& k, ElementPainter& d) {
   for (const auto& piece : pieces)
     for (Vec2 q : piece)
       if (all.empty() || q.x != all.back().x || q.y != all.back().y) all.push_back(q);
-  Color color = k.piece_colors.empty() ? d.pick(k.color) : k.piece_colors.back();
+  render::StrokeStyle stroke = k.stroke;
+  Color color = k.piece_colors.empty() ? d.pick(k.color, stroke) : k.piece_colors.back();
   // The exact pieces clipped to the box, else (no exact pieces) the polylines.
   auto paths = kernel_paths(k.basis, s0, s1, k.scale, d.map);
   if (k.piece_colors.empty()) {
@@ -221,9 +245,9 @@ void draw_kernel(const KernelElement& k, ElementPainter& d) {
           else if (const Vec2 cur = whole.points().back(); cur.x != to.x || cur.y != to.y) whole.line_to(to);
         }
       }
-      stroke_clipped(d.p, std::move(whole), k.stroke, color, d.clip);
+      stroke_clipped(d.p, std::move(whole), stroke, color, d.clip);
     } else {
-      stroke_clipped(d.p, all, false, k.stroke, color, d.clip);
+      stroke_clipped(d.p, all, false, stroke, color, d.clip);
     }
   } else {
     for (size_t i = 0; i < pieces.size(); ++i) {
@@ -237,20 +261,22 @@ void draw_kernel(const KernelElement& k, ElementPainter& d) {
     for (double s = std::ceil(s0); s <= s1; s += 1) d.mark(render::Marker::Circle, d.map({s, k.scale * kernel(k.basis, s)}), k.knot_size, kDark);
   for (size_t i = 0; i < k.piece_labels.size() && i < pieces.size(); ++i) {
     if (k.piece_labels[i].empty() || pieces[i].empty()) continue;
-    d.piece_label(k.piece_labels[i], k.piece_colors.empty() ? color : k.piece_colors[i], pieces[i]);
+    d.piece_label(k.piece_labels[i], k.piece_colors.empty() ? color : k.piece_colors[i], stroke, pieces[i]);
   }
   std::optional<Vec2> at;
   if (k.label.label_at) at = nearest_at_x(all, d.map.x.to_pixel(*k.label.label_at));
-  Entry e{k.label.label, color, k.stroke, true, false, false, render::Marker::Circle, 6};
+  Entry e{k.label.label, color, stroke, true, false, false, render::Marker::Circle, 6};
   d.label(k.label, e, "kernel", all, at);
 }
 
 void draw_series(const SeriesElement& s, ElementPainter& d) {
-  const SeriesLook& look = s.look;
-  const Color color = d.pick(look.color);
+  SeriesLook look = s.look;
+  render::StrokeStyle cycled = look.stroke;
+  const Color color = d.pick(look.color, cycled);
   std::vector<Vec2> pts;
   for (Vec2 q : s.points) pts.push_back(d.map(q));
   const bool line = look.mode == SeriesMode::Line || look.mode == SeriesMode::LineMarkers;
+  if (line || look.mode == SeriesMode::Steps) look.stroke = cycled;  // stems and markers stay solid
   const bool marks = look.mode == SeriesMode::Markers || look.mode == SeriesMode::LineMarkers || look.mode == SeriesMode::Stems;
   if (line && !s.bezier.empty() && d.map.affine()) {
     // A cubic spline: its Bezier pieces mapped to pixels (an affine map keeps them exact).

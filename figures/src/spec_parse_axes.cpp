@@ -253,6 +253,7 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   ax.legend_columns = r.integer("legend_columns", 1, 1, 16);
   ax.palette = r.string("palette", ax.palette);
   if (!palette_known(ax.palette)) r.fail("palette", "unknown palette \"" + ax.palette + "\" (viridis | tab10 | grey)");
+  ax.dash_cycle = r.boolean("dash_cycle", ax.dash_cycle);
   if (r.has("cell")) {
     auto v = r.numbers("cell");
     if (v.size() != 2 || v[0] < 0 || v[1] < 0 || v[0] != static_cast<int>(v[0]) || v[1] != static_cast<int>(v[1]))

@@ -14,6 +14,13 @@ struct SeriesInfo {
   std::string label;
   std::string color;  // "#rrggbb"
   std::string kind;   // curve, kernel, series, polygon, fill, rule
+  // How else it is drawn, so a reader can tell it from the others without colour: its dash
+  // pattern (on/off lengths in pixels at 1x; empty: solid, or no line), whether it is drawn as
+  // a line, and its marker ("circle", "square", ...; empty: none).
+  std::vector<double> dash = {};
+  bool line = true;
+  std::string marker = {};
+  bool piece = false;  // a labelled piece of a kernel drawn in several colours
 };
 
 struct AxesInfo {

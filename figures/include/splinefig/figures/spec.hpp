@@ -368,6 +368,7 @@ struct AxesSpec {
   std::string legend_title;
   int legend_columns = 1;
   std::string palette = "viridis";
+  bool dash_cycle = true;  // elements coloured from the palette also take the cycle's dashes
   std::optional<std::array<int, 2>> cell;       // [row, col] in the figure's layout grid
   std::optional<std::array<double, 4>> box;     // explicit pixel box [left, top, right, bottom]
   std::vector<PlotElement> elements;

@@ -1,0 +1,175 @@
+// Every built-in figure can be read without colour: any two labelled series of one panel either
+// differ in how they are drawn (dash pattern, line or none, marker shape), or differ in CIE
+// lightness L* by at least kMinDeltaL, both as printed (greyscale keeps L*) and as a deuteranope
+// sees them (Machado, Oliveira and Fernandes 2009, severity 1, applied in linear light). The
+// series and their styles are the layout's own (figures::layout_figure, as index.json reports
+// them); L* is worked out here from the "#rrggbb" with the sRGB and CIE formulas written out.
+#include <splinefig/figures/figure.hpp>
+#include <splinefig/figures/palette.hpp>
+#include <splinefig/figures/spec.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace splinefig;
+
+namespace {
+
+// Lines a reader must tell apart by shade alone: about a sixth of the range from black to white.
+constexpr double kMinDeltaL = 15;
+
+std::array<double, 3> linear_rgb(const std::string& hex) {
+  REQUIRE(hex.size() == 7);
+  std::array<double, 3> c{};
+  for (int i = 0; i < 3; ++i) {
+    const double v = std::stoi(hex.substr(1 + 2 * i, 2), nullptr, 16) / 255.0;  // IEC 61966-2-1 decoding
+    c[i] = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  }
+  return c;
+}
+
+// CIE 1976 L* of a linear-light colour (D65 white: Y = 1).
+double lightness(const std::array<double, 3>& c) {
+  const double Y = 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+  const double d = 6.0 / 29.0;
+  const double f = Y > d * d * d ? std::cbrt(Y) : Y / (3 * d * d) + 4.0 / 29.0;
+  return 116 * f - 16;
+}
+
+// Deuteranopia, Machado et al. 2009 (severity 1.0), on linear RGB, clamped to [0, 1].
+std::array<double, 3> deuteranope(const std::array<double, 3>& c) {
+  static constexpr double m[3][3] = {{0.367322, 0.860646, -0.227968},
+                                     {0.280085, 0.672501, 0.047413},
+                                     {-0.011820, 0.042940, 0.968881}};
+  std::array<double, 3> out{};
+  for (int i = 0; i < 3; ++i) out[i] = std::clamp(m[i][0] * c[0] + m[i][1] * c[1] + m[i][2] * c[2], 0.0, 1.0);
+  return out;
+}
+
+// Two dash patterns look different: one solid and one not, a different number of dashes per
+// period, or some length differing by a factor of 1.4 or more (lengths under 1 px count as 1).
+bool dashes_differ(std::vector<double> a, std::vector<double> b) {
+  if (a.empty() != b.empty()) return true;
+  if (a.size() % 2) a.insert(a.end(), a.begin(), a.end());
+  if (b.size() % 2) b.insert(b.end(), b.begin(), b.end());
+  if (a.size() != b.size()) return true;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double x = std::max(a[i], 1.0), y = std::max(b[i], 1.0);
+    if (std::max(x, y) / std::min(x, y) >= 1.4) return true;
+  }
+  return false;
+}
+
+bool drawn_differently(const figures::SeriesInfo& a, const figures::SeriesInfo& b) {
+  if (a.line != b.line || a.marker != b.marker) return true;
+  return a.line && dashes_differ(a.dash, b.dash);
+}
+
+// The pairs of one panel that only colour tells apart, with their L* (print, deuteranope).
+std::vector<std::string> indistinct_pairs(const figures::FigureInfo& info) {
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < info.axes.size(); ++k) {
+    const auto& s = info.axes[k].series;
+    for (std::size_t i = 0; i < s.size(); ++i)
+      for (std::size_t j = i + 1; j < s.size(); ++j) {
+        const auto &a = s[i], &b = s[j];
+        if (a.kind == "fill" || b.kind == "fill") continue;  // areas: told apart by where they are
+        if (a.piece && b.piece && a.color == b.color) continue;  // pieces of one kernel drawn alike on purpose
+        if (drawn_differently(a, b)) continue;
+        const auto ca = linear_rgb(a.color), cb = linear_rgb(b.color);
+        const double dl = std::abs(lightness(ca) - lightness(cb));
+        const double dd = std::abs(lightness(deuteranope(ca)) - lightness(deuteranope(cb)));
+        if (dl >= kMinDeltaL && dd >= kMinDeltaL) continue;
+        std::ostringstream m;
+        m << info.name << " axes " << k << ": \"" << a.label << "\" " << a.color << " and \"" << b.label << "\" "
+          << b.color << " are drawn alike and differ by L* " << dl << " (deuteranope " << dd << ")";
+        out.push_back(m.str());
+      }
+  }
+  return out;
+}
+
+figures::FigureInfo layout_of(const std::string& toml) {
+  return figures::layout_figure(figures::parse_spec(toml, "test", "."));
+}
+
+}  // namespace
+
+TEST_CASE("L* by the CIE formula: black 0, white 100, mid grey, the house red and blue") {
+  CHECK(lightness(linear_rgb("#000000")) == Approx(0).margin(1e-9));
+  CHECK(lightness(linear_rgb("#ffffff")) == Approx(100));
+  CHECK(lightness(linear_rgb("#777777")) == Approx(50.0).margin(0.1));  // sRGB 119: L* 50.03
+  // The pair that told six meanings apart by hue alone: L* 46.8 and 48.0.
+  CHECK(lightness(linear_rgb("#d62728")) == Approx(46.8).margin(0.05));
+  CHECK(lightness(linear_rgb("#1f77b4")) == Approx(48.0).margin(0.05));
+  // A deuteranope sees grey as grey.
+  const auto g = deuteranope(linear_rgb("#777777"));
+  CHECK(g[0] == Approx(g[1]).margin(1e-6));
+}
+
+TEST_CASE("every built-in figure's series can be told apart in greyscale and by a deuteranope") {
+  int figures_seen = 0, pairs = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SPLINEFIG_SOURCE_DIR "/figures/specs")) {
+    if (entry.path().extension() != ".toml") continue;
+    const figures::FigureInfo info = figures::layout_figure(figures::load_spec(entry.path().string()));
+    ++figures_seen;
+    for (const auto& ax : info.axes) pairs += static_cast<int>(ax.series.size() * (ax.series.size() - (ax.series.empty() ? 0 : 1)) / 2);
+    for (const std::string& problem : indistinct_pairs(info)) FAIL_CHECK(problem);
+  }
+  CHECK(figures_seen >= 33);
+  CHECK(pairs > 100);
+}
+
+TEST_CASE("the greyscale check catches two series told apart by hue alone") {
+  const std::string head = "[axes]\nx_range = [0, 1]\ny_range = [0, 1]\n";
+  const std::string red = "[[axes.series]]\npoints = [[0, 0], [1, 1]]\ncolor = \"#d62728\"\nlabel = \"red\"\n";
+  const std::string blue = "[[axes.series]]\npoints = [[0, 1], [1, 0]]\ncolor = \"#1f77b4\"\nlabel = \"blue\"\n";
+  CHECK(indistinct_pairs(layout_of(head + red + blue)).size() == 1);
+  // A dash on one of them, markers on one, or a darker blue (#08306b, L* 21) each tell them apart.
+  CHECK(indistinct_pairs(layout_of(head + red + blue + "dash = [8, 4]\n")).empty());
+  CHECK(indistinct_pairs(layout_of(head + red + blue + "style = \"line+markers\"\n")).empty());
+  std::string dark = blue;
+  dark.replace(dark.find("#1f77b4"), 7, "#08306b");
+  CHECK(indistinct_pairs(layout_of(head + red + dark)).empty());
+  // Dashes of nearly the same pattern are no cue.
+  CHECK(indistinct_pairs(layout_of(head + red + "dash = [7, 4]\n" + blue + "dash = [8, 4]\n")).size() == 1);
+  // Red against green: 6 apart in L* (47 and 53) and 3 apart as a deuteranope sees them.
+  std::string green = blue;
+  green.replace(green.find("#1f77b4"), 7, "#4c9a2a");
+  CHECK(indistinct_pairs(layout_of(head + red + green)).size() == 1);
+}
+
+TEST_CASE("series coloured from the palette take the style cycle's dashes") {
+  // Seven curves from viridis: neighbours are 7.5 apart in L*, so only their dashes tell them
+  // apart; without the cycle (dash_cycle = false) every neighbouring pair is drawn alike.
+  std::string toml = "[axes]\nx_range = [0, 1]\ny_range = [0, 7]\n";
+  for (int i = 0; i < 7; ++i)
+    toml += "[[axes.series]]\npoints = [[0, " + std::to_string(i) + "], [1, " + std::to_string(i + 1) +
+            "]]\nlabel = \"s" + std::to_string(i) + "\"\n";
+  const figures::FigureInfo cycled = layout_of(toml);
+  CHECK(indistinct_pairs(cycled).empty());
+  const auto& s = cycled.axes.at(0).series;
+  REQUIRE(s.size() == 7);
+  CHECK(s[0].dash.empty());
+  CHECK(s[1].dash == std::vector<double>{8, 4});
+  CHECK(s[2].dash == std::vector<double>{2, 3});
+  CHECK(s[6].dash.empty());  // the cycle has six patterns; the seventh colour is far from the first
+  for (std::size_t i = 0; i + 1 < s.size(); ++i) CHECK(lightness(linear_rgb(s[i].color)) < lightness(linear_rgb(s[i + 1].color)));
+  std::string plain = toml;
+  plain.insert(plain.find("y_range"), "dash_cycle = false\n");
+  CHECK(indistinct_pairs(layout_of(plain)).size() >= 6);
+  // An explicit dash or colour is kept as given.
+  const figures::FigureInfo own = layout_of(
+      "[axes]\nx_range = [0, 1]\ny_range = [0, 1]\n[[axes.series]]\npoints = [[0, 0], [1, 1]]\nlabel = \"a\"\n"
+      "[[axes.series]]\npoints = [[0, 1], [1, 0]]\ndash = [3, 3]\nlabel = \"b\"\n"
+      "[[axes.series]]\npoints = [[0, 1], [1, 1]]\ncolor = \"#000000\"\nlabel = \"c\"\n");
+  CHECK(own.axes.at(0).series.at(1).dash == std::vector<double>{3, 3});
+  CHECK(own.axes.at(0).series.at(2).dash.empty());
+}
