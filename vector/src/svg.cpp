@@ -234,7 +234,22 @@ std::string to_svg(const render::Scene& scene, const Options& o) {
 
 std::string xml_escape(std::string_view s) {
   std::string out;
-  for (char c : s) {
+  out.reserve(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    const auto u = static_cast<unsigned char>(c);
+    // XML 1.0 has no C0 control character but tab, newline and carriage return, and neither
+    // U+FFFE nor U+FFFF (EF BF BE, EF BF BF), even as a character reference: each is U+FFFD.
+    if (u < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+      out += "\xef\xbf\xbd";
+      continue;
+    }
+    if (u == 0xef && i + 2 < s.size() && static_cast<unsigned char>(s[i + 1]) == 0xbf &&
+        (static_cast<unsigned char>(s[i + 2]) & 0xfe) == 0xbe) {
+      out += "\xef\xbf\xbd";
+      i += 2;
+      continue;
+    }
     switch (c) {
       case '&': out += "&amp;"; break;
       case '<': out += "&lt;"; break;

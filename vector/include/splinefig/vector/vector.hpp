@@ -35,8 +35,9 @@ std::optional<VectorFormat> vector_format_of(const std::string& path);
 // True for a path ending in .svg or .pdf (any case).
 inline bool is_vector_file(const std::string& path) { return vector_format_of(path).has_value(); }
 
-// Text as XML character data or a quoted attribute value (&, <, >, " escaped): for SVG, and
-// for the HTML that shows it.
+// Text as XML character data or a quoted attribute value (&, <, >, " escaped; C0 controls but
+// tab, newline and CR, and U+FFFE and U+FFFF, which XML 1.0 has no way to hold, as U+FFFD): for
+// SVG, and for the HTML that shows it.
 std::string xml_escape(std::string_view text);
 
 // Writes to_svg or to_pdf, atomically (image/atomic_file.hpp). Throws UnwritableFile naming the
