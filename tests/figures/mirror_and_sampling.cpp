@@ -28,7 +28,8 @@ RenderedFigure bias_curve_alone(const std::string& basis) {
     for (auto& e : ax->elements)
       if (auto* c = std::get_if<CurveElement>(&e); c && c->basis_spec == basis) {
         c->color = Color{0, 0, 0, 1};
-        c->stroke.dashes = {};
+        c->stroke.dashes = {};  // b1 > 1 is dashed with butt caps in the figure
+        c->stroke.cap = render::Cap::Round;
         kept.push_back(*c);
       }
     REQUIRE(kept.size() == 1);

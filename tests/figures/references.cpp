@@ -53,14 +53,14 @@ TEST_CASE("the companion figures match their references") {
     check_figure_reference(name);
 }
 
-TEST_CASE("the reference check catches a series drawn in a slightly different red") {
-  // cbasis draws c_1 and c_0 in #d62728; #c03030 is 22/255 off in red, 9/255 in green and 8/255
-  // in blue: close enough to look the same at a glance, far enough to be a different colour.
+TEST_CASE("the reference check catches a series drawn in a slightly different orange") {
+  // cbasis draws c_1 and c_0 in #e69f00; #d09010 is 22/255 off in red, 15/255 in green and
+  // 16/255 in blue: close enough to look the same at a glance, far enough to be a different colour.
   const std::string text = read_text(kCbasis);
-  REQUIRE(text.find("\"#d62728\"") != std::string::npos);
+  REQUIRE(text.find("\"#e69f00\"") != std::string::npos);
   std::string recoloured = text;
-  for (size_t p = recoloured.find("\"#d62728\""); p != std::string::npos; p = recoloured.find("\"#d62728\"", p))
-    recoloured.replace(p, 9, "\"#c03030\"");
+  for (size_t p = recoloured.find("\"#e69f00\""); p != std::string::npos; p = recoloured.find("\"#e69f00\"", p))
+    recoloured.replace(p, 9, "\"#d09010\"");
   CHECK(matches_cbasis_reference(figures::parse_spec(text, "cbasis", SPLINEFIG_SOURCE_DIR "/figures/specs")));
   CHECK_FALSE(matches_cbasis_reference(figures::parse_spec(recoloured, "cbasis", SPLINEFIG_SOURCE_DIR "/figures/specs")));
 }

@@ -46,7 +46,7 @@ TEST_CASE("render_spec_to_image: a changed spec fails with its artefacts at abso
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::string text = read_text(kCbasis);
-  const auto red = text.find("\"#d62728\"");
+  const auto red = text.find("\"#e69f00\"");
   REQUIRE(red != std::string::npos);
   text.replace(red, 9, "\"#2ca02c\"");
   { std::ofstream(dir / "green.toml") << text; }
