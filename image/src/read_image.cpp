@@ -24,12 +24,15 @@ namespace {
 namespace fs = std::filesystem;
 using detail::one_line;
 
+// The PNG checks apply from the signature's first four bytes: libpng (which OpenImageIO also
+// tries on files of other names) takes a file starting "\x89PNG" for a damaged PNG and prints
+// "libpng error: PNG file corrupted by ASCII conversion" on stderr; check_png_header refuses it.
 bool has_png_signature(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  unsigned char head[8] = {};
-  in.read(reinterpret_cast<char*>(head), 8);
-  static constexpr unsigned char signature[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
-  return in.gcount() == 8 && std::memcmp(head, signature, 8) == 0;
+  unsigned char head[4] = {};
+  in.read(reinterpret_cast<char*>(head), 4);
+  static constexpr unsigned char signature[4] = {0x89, 'P', 'N', 'G'};
+  return in.gcount() == 4 && std::memcmp(head, signature, 4) == 0;
 }
 
 bool iequals(const std::string& a, const std::string& b) {

@@ -98,3 +98,21 @@ TEST_CASE("valid PNGs the new checks look at still read: every filter type, Adam
   }
   fs::remove_all(dir);
 }
+
+// Found by fuzz_resample: a file starting "\x89PNG" but not with the whole signature reached
+// libpng (under any name: OpenImageIO tries its PNG reader on unknown files too), which printed
+// "libpng error: PNG file corrupted by ASCII conversion".
+TEST_CASE("a file with a damaged PNG signature is refused by the check, whatever its name") {
+  const std::string bad_end = std::string("\x89PNG\r\n\x1a\x02", 8) + "IHDR" + std::string(24, 'x');
+  const std::string cut = std::string("\x89PNG\r\n\x1a", 7);
+  for (const auto& [name, bytes] : {std::pair<std::string, std::string>{"sig_end", bad_end}, {"sig_cut", cut}})
+    for (const char* ext : {".png", ".dat"}) {
+      const fs::path dir = scratch();
+      write_file(dir / (name + ext), bytes);
+      const Outcome o = run_in(dir, {"diff", name + ext, name + ext});
+      INFO(name << ext << ": " << o.err);
+      CHECK(o.code == 4);
+      CHECK(o.err == "splinefig diff: cannot read " + name + ext + ": not a PNG file (bad signature or no IHDR chunk)\n");
+      fs::remove_all(dir);
+    }
+}
