@@ -42,6 +42,15 @@ void write_figure_file(const FigureScene& fig, const std::string& path, Format f
     std::snprintf(buf, sizeof buf, "dpi %g is outside [%g, %g]", o.dpi, kMinDpi, kMaxDpi);
     throw std::invalid_argument(buf);
   }
+  // The file holds dpi x scale (the figure keeps its printed size at any scale): that is what
+  // the limit bounds, for rasters and vectors alike (a vector without --dpi takes 96).
+  const double file_dpi = (o.dpi > 0 ? o.dpi : (format == Format::svg || format == Format::pdf ? 96.0 : 0.0)) * o.scale;
+  if (file_dpi != 0 && !(file_dpi >= kMinDpi && file_dpi <= kMaxDpi)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "dpi %g at scale %g is %g dots per inch in the file, outside [%g, %g]",
+                  o.dpi > 0 ? o.dpi : 96.0, o.scale, file_dpi, kMinDpi, kMaxDpi);
+    throw std::invalid_argument(buf);
+  }
   if (format == Format::svg || format == Format::pdf) {
     vector::Options v;
     v.dpi = (o.dpi > 0 ? o.dpi : 96.0) * o.scale;
