@@ -9,6 +9,8 @@
 #include <splinefig/image/io.hpp>
 #include <splinefig/version.hpp>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -56,11 +58,20 @@ const splinefig::cli::Registration reg{
         splinefig::cli::check_output_scale(a->scale);
         const int threads = splinefig::cli::check_threads(a->threads);
         const double dpi = splinefig::cli::check_dpi(a->dpi);
+        const std::string spec_name = from_stdin ? "stdin" : a->spec;
+        std::string need;  // the scaled canvas, for a message about memory (as figures says it)
         try {
           fig::FigureSpec spec = from_stdin ? fig::parse_spec(splinefig::cli::read_stdin_bytes("the spec", splinefig::kMaxSpecBytes), "stdin", ".")
                                             : fig::load_spec(a->spec);
           if (std::string bad = to_stdout || from_stdin ? "" : fig::output_over_input({a->out}, {a->spec}); !bad.empty())
             throw Failure("-o " + bad + " (write to another file)");
+          {
+            const double cw = std::round(spec.canvas.width * a->scale), ch = std::round(spec.canvas.height * a->scale);
+            char buf[128];
+            std::snprintf(buf, sizeof buf, "%.0f x %.0f px at --scale %g, %.0f MiB as a float RGBA image", cw, ch, a->scale,
+                          std::ceil(cw * ch * 16 / (1 << 20)));
+            need = buf;
+          }
           fig::check_scaled_canvas(spec, a->scale, "--scale");
           const fig::FigureScene f = fig::figure_scene(spec, a->scale);
           fig::FigureFileOptions w;

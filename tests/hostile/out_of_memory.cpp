@@ -30,3 +30,24 @@ TEST_CASE("a figure out of memory is one line naming the spec and its canvas, no
   CHECK_FALSE(fs::exists(dir / "out" / "bias.png"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("render out of memory is one line naming the spec and its canvas, not std::bad_alloc") {
+#if defined(__SANITIZE_ADDRESS__)
+  splinefig::testing_support::skip("ulimit -v cannot limit a program built with AddressSanitizer");
+  return;
+#endif
+  const fs::path dir = scratch();
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/bias.toml";
+  const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && ulimit -v 300000 && timeout -s KILL " +
+                          std::to_string(kTimeLimit) + " " + splinefig::test::shell_quote(SPLINEFIG_EXE) + " render " +
+                          splinefig::test::shell_quote(spec) + " -o bias.png --threads 1 --scale 8 > out.txt 2> err.txt";
+  const int status = std::system(cmd.c_str());
+  const std::string err = splinefig::test::slurp(dir / "err.txt");
+  INFO(err);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 2);
+  CHECK(err == "splinefig render: " + spec +
+                   ": out of memory rendering the figure (6400 x 4000 px at --scale 8, 391 MiB as a float RGBA image)\n");
+  CHECK_FALSE(fs::exists(dir / "bias.png"));
+  fs::remove_all(dir);
+}
