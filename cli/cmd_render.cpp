@@ -97,6 +97,10 @@ const splinefig::cli::Registration reg{
           }
         } catch (const fig::SpecFileError& e) {
           throw Failure(e.what());
+        } catch (const std::bad_alloc&) {
+          // One line naming the spec and what it needed, not a bare "std::bad_alloc".
+          throw Failure(spec_name + ": out of memory " +
+                        (need.empty() ? std::string("reading the spec") : "rendering the figure (" + need + ")"));
         }
         return 0;
       });
