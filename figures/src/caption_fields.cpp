@@ -20,7 +20,7 @@ const std::map<std::string, int, std::less<>>& functions() {
   static const std::map<std::string, int, std::less<>> f{
       {"point", 1},    {"x", 1},        {"y", 1},        {"d1", 1},       {"d2", 1},   {"curvature", 1},
       {"max_y", 2},    {"min_y", 2},    {"argmax_y", 2}, {"argmin_y", 2}, {"knot", 1}, {"count", 0},
-      {"b1", 1},       {"b2", 1},       {"item", 1}};
+      {"b1", 1},       {"b2", 1},       {"item", 1},     {"k", 1},        {"db", 1}};
   return f;
 }
 
@@ -43,7 +43,7 @@ std::string parse_value(const std::string& text, CaptionField& f) {
   const auto fn = functions().find(f.function);
   if (fn == functions().end())
     return "\"" + f.function + "\" is not a value function (point, x, y, d1, d2, curvature, max_y, min_y, argmax_y, "
-           "argmin_y, knot, count, item, b1, b2)";
+           "argmin_y, knot, count, item, b1, b2, k, db)";
   const std::string inner = trim(text.substr(open + 1, close - open - 1));
   std::size_t at = 0;
   while (!inner.empty() && at <= inner.size()) {
@@ -204,6 +204,11 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
                   std::to_string(lb->betas.size()) + " knots");
     return {{lb->betas[i][fn == "b1" ? 0 : 1], 0}, false};
   }
+  if (fn == "k") {  // k(s) of a kernel (times its scale) or of a filter curve
+    if (const auto* k = std::get_if<KernelElement>(&e)) return {{k->scale * kernel(k->basis, f.args[0]), 0}, false};
+    if (const auto* fc = std::get_if<FilterCurveElement>(&e)) return {{fc->filter(f.args[0]), 0}, false};
+    fail(f, "value: k() reads a kernel or filter element; \"" + f.element + "\" is neither");
+  }
   if (!is_generated(e))
     fail(f, "element: \"" + f.element + "\" is not a generated element (bezier, lagrange, interp, relaxed_bspline, "
             "subdivision, local_betas, ...): " + fn + "() reads generated data");
@@ -231,6 +236,11 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
       fail(f, "value: " + fn + "(): t = " + caption_number(t, 6) + " is outside the curve's parameter range [" +
                   caption_number(t0, 6) + ", " + caption_number(t1, 6) + "]");
   const double t = f.args[0];
+  if (fn == "db") {  // 20 log10 |y(t)|, as a db axis draws it
+    const double y = std::abs(path->at(t).y);
+    if (!(y > 0)) fail(f, "value: db(): y is 0 at t = " + caption_number(t, 6) + " (minus infinity dB)");
+    return {{20 * std::log10(y), 0}, false};
+  }
   if (fn == "point" || fn == "x" || fn == "y") {
     const Vec2 p = path->at(t);
     if (fn == "point") return {{p.x, p.y}, true};

@@ -9,6 +9,7 @@
 
 #include <splinefig/figures/figure.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -332,4 +333,76 @@ TEST_CASE("s003-fig17's caption prints the in-between heel (13 S0 + 22 S1 - 3 S2
   const Vec2 heel = (1.0 / 32) * (13 * e.frames[0][2] + 22 * e.frames[1][2] + (-3) * e.frames[2][2]);
   CHECK(contains(caption, "= " + fmt(heel, 5) + "."));
   CHECK(contains(caption, "(13 S₀ + 22 S₁ − 3 S₂)/32 = (1.61875, 0.20625)."));
+}
+
+namespace {
+
+// Keys' cardinal cubic with parameter a (a = 0.5: Catmull-Rom), written out.
+double cardinal(double a, double s) {
+  s = std::abs(s);
+  if (s < 1) return (2 - a) * s * s * s + (a - 3) * s * s + 1;
+  if (s < 2) return -a * s * s * s + 5 * a * s * s - 8 * a * s + 4 * a;
+  return 0;
+}
+
+// The samples 0,0,0,0,1,1,1,1 (clamped at the ends) reconstructed by the cardinal kernel, whose
+// weights sum to 1: its largest value, on a grid of 1e-5 over [3.5, 5.5].
+double cardinal_step_peak(double a) {
+  const double v[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+  double best = 0;
+  for (int i = 0; i <= 200000; ++i) {
+    const double t = 3.5 + i * 1e-5;
+    double x = 0;
+    for (int j = static_cast<int>(std::floor(t)) - 1; j <= static_cast<int>(std::floor(t)) + 2; ++j)
+      x += cardinal(a, t - j) * v[std::clamp(j, 0, 7)];
+    best = std::max(best, x);
+  }
+  return best;
+}
+
+// |K(f)| of a kernel on [-2, 2] by Simpson's rule on 4000 intervals (the kernels are even).
+template <class K>
+double response_at(K k, double f) {
+  const int n = 4000;
+  const double h = 4.0 / n;
+  double sum = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double s = -2 + i * h;
+    sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * k(s) * std::cos(2 * M_PI * f * s);
+  }
+  return std::abs(sum * h / 3);
+}
+
+}  // namespace
+
+TEST_CASE("bbasis' caption prints the B-spline kernel's k(0) = 2/3 and k(1) = 1/6", "[captions]") {
+  const std::string caption = built_caption(builtin("bbasis"));
+  INFO(caption);
+  // The uniform cubic B-spline: (4 - 6s^2 + 3|s|^3)/6 on |s| < 1.
+  CHECK(contains(caption, "k(0) = " + fmt(4.0 / 6, 4) + ","));
+  CHECK(contains(caption, "k(±1) = " + fmt((4.0 - 6 + 3) / 6, 4) + ","));
+}
+
+TEST_CASE("filter-step's caption prints the overshoots 1 + 2/27 and 1 + 4/27", "[captions]") {
+  const std::string caption = built_caption(builtin("filter-step"));
+  INFO(caption);
+  const double cr = cardinal_step_peak(0.5), c1 = cardinal_step_peak(1);
+  CHECK(cr == Approx(1 + 2.0 / 27).epsilon(1e-7));  // the classic overshoot, by the grid
+  CHECK(c1 == Approx(1 + 4.0 / 27).epsilon(1e-7));
+  CHECK(contains(caption, "peaking at " + fmt(cr, 3) + " and " + fmt(c1, 3) + ";"));
+}
+
+TEST_CASE("filter-response's caption prints |K(0.25)| in dB of the B-spline and of Catmull-Rom", "[captions]") {
+  const std::string caption = built_caption(builtin("filter-response"));
+  INFO(caption);
+  // The B-spline is the box convolved four times: |K(f)| = sinc(f)^4.
+  const double sinc = std::sin(M_PI * 0.25) / (M_PI * 0.25);
+  const double bspline = 80 * std::log10(sinc);
+  CHECK(bspline == Approx(20 * std::log10(response_at([](double s) {
+          s = std::abs(s);
+          return s < 1 ? (4 - 6 * s * s + 3 * s * s * s) / 6 : s < 2 ? (2 - s) * (2 - s) * (2 - s) / 6 : 0.0;
+        }, 0.25))).margin(1e-6));
+  const double cr = 20 * std::log10(response_at([](double s) { return cardinal(0.5, s); }, 0.25));
+  CHECK(contains(caption, "B-spline (sinc⁴) is at " + fmt(bspline, 1) + " dB at f = 0.25"));
+  CHECK(contains(caption, "Catmull-Rom is at " + fmt(cr, 1) + " dB there"));
 }
