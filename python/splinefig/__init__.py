@@ -52,10 +52,21 @@ def _int(value: Any, name: str, lo: Optional[int] = None, hi: Optional[int] = No
     return v
 
 
+def _no_surrogate(value: str, name: str, what: str) -> str:
+    # A lone surrogate (as os.fsdecode makes of undecodable bytes) is no UTF-8: pybind11 would
+    # refuse the call as "incompatible function arguments".
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError as e:
+        raise ValueError(f"{name}: {what} holding a lone surrogate (U+{ord(value[e.start]):04X} at index {e.start}), "
+                         "which is not UTF-8") from None
+    return value
+
+
 def _str(value: Any, name: str) -> str:
     if not isinstance(value, str):
         raise TypeError(f"{name}: expected a string, got {type(value).__name__}")
-    return value
+    return _no_surrogate(value, name, "a string")
 
 
 def _choice(value: Any, name: str, known: Sequence[str]) -> str:
@@ -105,6 +116,7 @@ def _kernel(value: Any, name: str = "basis") -> "Kernel":
     if isinstance(value, Basis):
         return _core.basis_kernel(value._b)
     if isinstance(value, str):
+        _str(value, name)
         try:
             return _core.parse_kernel(value)
         except ValueError as e:
@@ -123,7 +135,7 @@ def _basis(value: Any, name: str = "basis") -> "Basis":
 def _color(value: Any, name: str) -> tuple:
     """'#rrggbb[aa]' (sRGB) or 3 or 4 linear-light floats -> a linear RGBA tuple."""
     if isinstance(value, str):
-        c = _core.parse_hex_color(value)
+        c = _core.parse_hex_color(_str(value, name))
         if c is None:
             raise ValueError(f"{name}: '{value}' is not #rrggbb or #rrggbbaa")
         return tuple(c)
@@ -133,6 +145,18 @@ def _color(value: Any, name: str) -> tuple:
     if not np.isfinite(a).all():
         raise ValueError(f"{name}: contains a value that is not finite")
     return tuple(float(v) for v in a) + ((1.0,) if a.size == 3 else ())
+
+
+def _stroke_args(width: Any, join: str, cap: str, miter_limit: Any, dashes: Sequence[float], dash_offset: Any) -> tuple:
+    """A stroke's arguments as the library takes them, converted only: the library checks
+    their values (a width >= 0, a miter limit >= 1, a valid dash pattern) and says what is wrong."""
+    return (_real(width, "width"), _choice(join, "join", ("miter", "round", "bevel")),
+            _choice(cap, "cap", ("butt", "round", "square")), _real(miter_limit, "miter_limit"),
+            [_real(d, "dashes") for d in dashes], _real(dash_offset, "dash_offset"))
+
+
+# The highest degree of uniform_bspline, as the library checks it (spline/src/basis.cpp).
+_MAX_UNIFORM_DEGREE = 20
 
 
 def _library(name: str, f, *args):
@@ -187,7 +211,7 @@ class Basis:
 
     @staticmethod
     def uniform_bspline(degree: int) -> "Basis":
-        return Basis(_library("degree", _core.uniform_bspline, _int(degree, "degree", 1, 64)))
+        return Basis(_library("degree", _core.uniform_bspline, _int(degree, "degree", 1, _MAX_UNIFORM_DEGREE)))
 
     @staticmethod
     def mitchell_netravali(b: float = 1 / 3, c: float = 1 / 3) -> "Basis":
@@ -342,7 +366,19 @@ def interpolate(points: Any, *, ends: str = "relaxed", start_velocity: Any = Non
         vel.append(a)
     if e == "periodic" and not np.array_equal(s[0], s[-1]):
         raise ValueError(f"points: ends 'periodic' needs the last point to repeat the first (point {s.shape[0]} differs)")
-    return _library("points", _core.interpolate, s, e, vel[0], vel[1], o, g)
+    out = _library("points", _core.interpolate, s, e, vel[0], vel[1], o, g)
+    if not np.isfinite(out).all():
+        # The spline is linear in its data: from finite data, a value that is not finite means the
+        # solve or the curve overflowed. Name the coordinate of largest magnitude, as
+        # `splinefig interp` does (the data point counted from 1).
+        k = int(np.argmax(np.abs(s)))
+        what, big = f"data point {k // dim + 1}", float(np.abs(s).ravel()[k])
+        for name, v in (("start_velocity", vel[0]), ("end_velocity", vel[1])):
+            if v.size and float(np.abs(v).max()) > big:
+                what, big = name, float(np.abs(v).max())
+        raise ValueError(f"points: the spline overflows the range of a double: {what} (a coordinate {big!r}) "
+                         "is too large to interpolate")
+    return out
 
 
 # ---- rendering -------------------------------------------------------------------------------
@@ -428,19 +464,9 @@ class Scene:
                     dashes: Sequence[float] = (), dash_offset: float = 0.0) -> "Scene":
         """Strokes a path (vertices and codes as fill_path) as the union of its pieces."""
         v, c = self._path_args(vertices, codes)
-        wd = _real(width, "width")
-        if wd <= 0:
-            raise ValueError(f"width: {wd} is not positive")
-        ml = _real(miter_limit, "miter_limit")
-        if ml < 1:
-            raise ValueError(f"miter_limit: {ml} is less than 1")
-        ds = [_real(d, "dashes") for d in dashes]
-        if any(d < 0 for d in ds) or (ds and sum(ds) <= 0):
-            raise ValueError("dashes: lengths must be >= 0 with a positive sum")
-        args = (v, c, _color(color, "color"), wd, _choice(join, "join", ("miter", "round", "bevel")),
-                _choice(cap, "cap", ("butt", "round", "square")), ml, ds, _real(dash_offset, "dash_offset"))
+        args = (v, c, _color(color, "color")) + _stroke_args(width, join, cap, miter_limit, dashes, dash_offset)
         with self._lock:
-            _library("dashes", self._s.stroke_path, *args)
+            _library("stroke_path", self._s.stroke_path, *args)
         return self
 
     def image(self, rgba: Any, p0: Any, p1: Any, *, sampling: str = "nearest") -> "Scene":
@@ -473,18 +499,9 @@ class Scene:
         p = _points(points, "points", 2)
         if p.shape[1] != 2:
             raise ValueError(f"points: expected an (n, 2) array, got shape {p.shape}")
-        wd = _real(width, "width")
-        if wd <= 0:
-            raise ValueError(f"width: {wd} is not positive")
-        ml = _real(miter_limit, "miter_limit")
-        if ml < 1:
-            raise ValueError(f"miter_limit: {ml} is less than 1")
-        ds = [_real(d, "dashes") for d in dashes]
-        if any(d < 0 for d in ds) or (ds and sum(ds) <= 0):
-            raise ValueError("dashes: lengths must be >= 0 with a positive sum")
+        args = (p, bool(closed), _color(color, "color")) + _stroke_args(width, join, cap, miter_limit, dashes, dash_offset)
         with self._lock:
-            _library("points", self._s.polyline, p, bool(closed), _color(color, "color"), wd, _choice(join, "join", ("miter", "round", "bevel")),
-                     _choice(cap, "cap", ("butt", "round", "square")), ml, ds, _real(dash_offset, "dash_offset"))
+            _library("polyline", self._s.polyline, *args)
         return self
 
     def fill(self, contours: Any, *, color: Any = "#000000", rule: str = "nonzero") -> "Scene":
@@ -587,7 +604,7 @@ def _path(value: Any, name: str) -> str:
     if "\0" in value:
         # The C library would cut the path there: write_image("a\0b.png") wrote a file "a".
         raise ValueError(f"{name}: a path holding a NUL character")
-    return value
+    return _no_surrogate(value, name, "a path")
 
 
 def specs_dir() -> str:

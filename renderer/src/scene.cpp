@@ -54,14 +54,14 @@ void check_points(std::span<const Vec2> pts, const char* call, const char* name)
 void check_color(const Color& c, const char* call) {
   for (float v : {c.r, c.g, c.b, c.a})
     if (!std::isfinite(v)) bad(std::string(call) + ": colour component is not finite");
-  if (c.a < 0 || c.a > 1) bad(std::string(call) + ": colour alpha " + std::to_string(c.a) + " is outside [0, 1]");
+  if (c.a < 0 || c.a > 1) bad(std::string(call) + ": colour alpha " + num(c.a) + " is outside [0, 1]");
 }
 
 void check_style(const StrokeStyle& s, const char* call) {
   check_finite(s.width, call, "stroke width");
   if (s.width < 0) bad(std::string(call) + ": stroke width " + num(s.width) + " is negative");
   check_finite(s.miter_limit, call, "miter limit");
-  if (s.miter_limit < 1) bad(std::string(call) + ": miter limit " + std::to_string(s.miter_limit) + " is below 1");
+  if (s.miter_limit < 1) bad(std::string(call) + ": miter limit " + num(s.miter_limit) + " is below 1");
   check_finite(s.dash_offset, call, "dash offset");  // the pattern itself is valid by construction
 }
 
