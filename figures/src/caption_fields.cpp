@@ -20,7 +20,7 @@ const std::map<std::string, int, std::less<>>& functions() {
   static const std::map<std::string, int, std::less<>> f{
       {"point", 1},    {"x", 1},        {"y", 1},        {"d1", 1},       {"d2", 1},   {"curvature", 1},
       {"max_y", 2},    {"min_y", 2},    {"argmax_y", 2}, {"argmin_y", 2}, {"knot", 1}, {"count", 0},
-      {"b1", 1},       {"b2", 1},       {"item", 1},     {"k", 1},        {"db", 1}};
+      {"b1", 1},       {"b2", 1},       {"item", 1},     {"k", 1},        {"db", 1},       {"points", 0}};
   return f;
 }
 
@@ -43,7 +43,7 @@ std::string parse_value(const std::string& text, CaptionField& f) {
   const auto fn = functions().find(f.function);
   if (fn == functions().end())
     return "\"" + f.function + "\" is not a value function (point, x, y, d1, d2, curvature, max_y, min_y, argmax_y, "
-           "argmin_y, knot, count, item, b1, b2, k, db)";
+           "argmin_y, knot, count, item, b1, b2, k, db, points)";
   const std::string inner = trim(text.substr(open + 1, close - open - 1));
   std::size_t at = 0;
   while (!inner.empty() && at <= inner.size()) {
@@ -263,6 +263,31 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
   return {{fn.rfind("arg", 0) == 0 ? te : path->at(te).y, 0}, false};
 }
 
+// Every input point of the element, "(x, y), (x, y), ...", each number with at most `decimals`
+// decimals and no trailing zeros.
+std::string point_list(const FigureSpec& spec, const CaptionField& f) {
+  const std::vector<Vec2>* pts = input_points(find_element(spec, f));
+  if (!pts || pts->empty()) fail(f, "value: \"" + f.element + "\" has no points or knots for points()");
+  auto num = [&](double v) {
+    std::string s = caption_number(v, f.decimals);
+    if (s.find('.') != std::string::npos) {
+      while (s.back() == '0') s.pop_back();
+      if (s.back() == '.') s.pop_back();
+    }
+    return s == "\u22120" ? std::string("0") : s;
+  };
+  std::string out;
+  for (std::size_t i = 0; i < pts->size(); ++i) {
+    if (i) out += ", ";
+    out += '(';
+    out += num((*pts)[i].x);
+    out += ", ";
+    out += num((*pts)[i].y);
+    out += ')';
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string caption_number(double v, int decimals) {
@@ -318,6 +343,10 @@ std::string caption_text(const FigureSpec& spec) {
   const std::vector<Ref> refs = references(spec.caption, problem);
   std::map<std::string, std::string> values;
   for (const CaptionField& f : spec.caption_fields) {
+    if (f.function == "points") {
+      values[f.name] = point_list(spec, f);
+      continue;
+    }
     const Value v = evaluate(spec, f);
     std::string text = caption_number(v.v[0], f.decimals);
     if (v.vector) {  // "(x, y)", built by appends (GCC 12 -Wrestrict, PR 105329, on "(" + s)

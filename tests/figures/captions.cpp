@@ -406,3 +406,25 @@ TEST_CASE("filter-response's caption prints |K(0.25)| in dB of the B-spline and 
   CHECK(contains(caption, "B-spline (sinc⁴) is at " + fmt(bspline, 1) + " dB at f = 0.25"));
   CHECK(contains(caption, "Catmull-Rom is at " + fmt(cr, 1) + " dB there"));
 }
+
+TEST_CASE("the point lists of s003-fig09, s003-fig13, ends, arclength and multiplicity are the drawn points", "[captions]") {
+  // Each list as the figure's source gives it (the seeds' B_i and S_i, the memo's knots), and it
+  // is the element's own data: a knot moved in the spec moves in the caption.
+  const std::pair<const char*, const char*> lists[] = {
+      {"s003-fig09", "B₀..B₆ = (0, 0), (1, 3), (3, 3.5), (4, 1), (6, 0.5), (7, 3), (9, 3.5)."},
+      {"s003-fig13", "S₀..S₄ = (1, −1), (−1, 2), (1, 4), (4, 3), (7, 5)."},
+      {"ends", "Knots (0, 0), (1, 2), (3, 2.5), (4, 0.5), (6, 1), (7, 3) splined"},
+      {"arclength", "through (0, 0), (1, 3), (2, 3.2), (6, 0), (7, 1) with"},
+      {"multiplicity", "Knots (0, 0), (1, 2), (2, 0), (3, 2), (4, 0) with the middle knot (2, 0) given"}};
+  for (auto [name, text] : lists) {
+    const std::string caption = built_caption(builtin(name));
+    INFO(name << ": " << caption);
+    CHECK(contains(caption, text));
+  }
+  FigureSpec moved = builtin("s003-fig13");
+  for (auto& item : moved.items)
+    if (auto* ax = std::get_if<AxesSpec>(&item))
+      for (auto& e : ax->elements)
+        if (auto* s = std::get_if<SeriesElement>(&e); s && !s->points.empty()) s->points[1] = {-1.25, 2};
+  CHECK(contains(built_caption(moved), "(1, −1), (−1.25, 2), (1, 4)"));
+}
