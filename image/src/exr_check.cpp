@@ -4,6 +4,7 @@
 // name likewise, a little-endian int32 size and that many bytes, ended by an empty name. A
 // multi-part file has several headers, the list ended by one more empty name.
 #include "exr_check.hpp"
+#include "origin.hpp"
 
 #include <splinefig/image/io.hpp>
 
@@ -62,6 +63,7 @@ void check_exr_header(const std::string& path) {
       }
       const std::size_t name_start = i;
       name("name");
+      const std::size_t type_start = i;
       name("type");
       if (i + 4 > n) bad(path, "truncated OpenEXR header (an attribute size)");
       const std::int32_t size = static_cast<std::int32_t>(d[i] | d[i + 1] << 8 | d[i + 2] << 16 | std::uint32_t(d[i + 3]) << 24);
@@ -74,6 +76,21 @@ void check_exr_header(const std::string& path) {
                       " bytes, more than the file holds)");
       }
       if (static_cast<std::uint64_t>(size) > n - i) bad(path, "OpenEXR header larger than 64 MiB");
+      // The data window against the limits before OpenEXR sizes its buffers by it: a window
+      // 16775427 px wide made it allocate 2 GB while opening the file.
+      if (std::strcmp(reinterpret_cast<const char*>(&d[name_start]), "dataWindow") == 0 &&
+          std::strcmp(reinterpret_cast<const char*>(&d[type_start]), "box2i") == 0 && size == 16) {
+        std::int32_t box[4];
+        for (int k = 0; k < 4; ++k)
+          box[k] = static_cast<std::int32_t>(d[i + 4 * k] | d[i + 4 * k + 1] << 8 | d[i + 4 * k + 2] << 16 |
+                                             std::uint32_t(d[i + 4 * k + 3]) << 24);
+        const std::int64_t w = std::int64_t(box[2]) - box[0] + 1, h = std::int64_t(box[3]) - box[1] + 1;
+        if (w > 0 && h > 0 &&
+            (w > std::int64_t(kMaxImageSide) || h > std::int64_t(kMaxImageSide) || std::uint64_t(w * h) > kMaxImagePixels))
+          bad(path, "image too large (" + std::to_string(w) + " x " + std::to_string(h) +
+                        " pixels declared in the header, limit 2^28 pixels and 65536 a side)");
+        if (std::string problem = detail::origin_problem(box[0], box[1]); !problem.empty()) bad(path, problem);
+      }
       i += static_cast<std::size_t>(size);
     }
     if (!multipart) return;
