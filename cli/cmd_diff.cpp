@@ -3,6 +3,7 @@
 // options image tests need (linear light, alpha, mask, shift tolerance, SSIM, FLIP) and
 // pictures of the difference. See docs/compare.md.
 #include "command.hpp"
+#include "stdio.hpp"
 
 #include <splinefig/compare/compare.hpp>
 #include <splinefig/image/io.hpp>
@@ -70,11 +71,21 @@ int run(const DiffArgs& args) {
     throw cli::Failure("--scale must be a finite number > 0");
 
 
+  // `-` is stdin for one of A and B; stdout holds the report.
+  if (cli::is_stdio(args.a) && cli::is_stdio(args.b)) throw cli::Failure("A and B are both - (stdin holds one image)");
+  if (cli::is_stdio(args.mask)) throw cli::Failure("--mask -: stdin is not read for the mask (give a file)");
+  for (const auto& [flag, out] : {std::pair{"--diff-image", &args.diff_image}, std::pair{"--triptych", &args.triptych}})
+    if (cli::is_stdio(*out)) throw cli::Failure(std::string(flag) + " -: stdout holds the report (give a file)");
+  cli::Scratch scratch;
+  const std::string stdin_path = cli::is_stdio(args.a) || cli::is_stdio(args.b) ? cli::stdin_image(scratch) : "";
+  const auto path_of = [&](const std::string& p) { return cli::is_stdio(p) ? stdin_path : p; };
+  const auto said = [&](const std::string& m) { return cli::said_as(m, stdin_path, "stdin"); };
+
   // An output over an input would destroy it: refused before anything is read or written.
   for (const std::string* out : {&args.diff_image, &args.triptych}) {
     if (out->empty()) continue;
     for (const std::string* in : {&args.a, &args.b, &args.mask})
-      if (!in->empty() && same_file(*out, *in))
+      if (!in->empty() && !cli::is_stdio(*in) && same_file(*out, *in))
         throw cli::Failure("cannot write " + *out + ": it is the input " + *in, 4);
   }
   if (!args.diff_image.empty() && !args.triptych.empty() &&
@@ -85,13 +96,20 @@ int run(const DiffArgs& args) {
   for (const std::string* in : {&args.a, &args.b, &args.mask}) {
     if (in->empty()) continue;
     try {
-      check_image_header(*in);
+      check_image_header(path_of(*in));
     } catch (const UnreadableImage& e) {
-      throw cli::Failure(std::string("cannot read ") + e.what(), 4);
+      throw cli::Failure(said(std::string("cannot read ") + e.what()), 4);
     }
   }
-  const Image a = load(args.a, o.linear);
-  const Image b = load(args.b, o.linear);
+  const auto load_input = [&](const std::string& p) {
+    try {
+      return load(path_of(p), o.linear);
+    } catch (const cli::Failure& e) {
+      throw cli::Failure(said(e.what()), e.code);
+    }
+  };
+  const Image a = load_input(args.a);
+  const Image b = load_input(args.b);
   std::unique_ptr<Image> mask;
   if (!args.mask.empty()) mask = std::make_unique<Image>(load(args.mask, false));
 
@@ -149,6 +167,7 @@ const cli::Registration reg{
       app.add_flag("-v,--verbose", args->verbose, "Print the report even when the images match");
       app.add_flag("-q,--quiet", args->quiet, "Print only FAILURE");
       app.footer(
+          "A or B (not both) may be -, the image on stdin.\n\n"
           "Example: splinefig diff expected.png actual.png --linear --fail 0.004 --diff-image diff.png");
       return cli::Runner([args] { return run(*args); });
     }};

@@ -30,7 +30,7 @@ const splinefig::cli::Registration reg{
       app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md); - reads it from stdin, its relative paths then from the current directory")->type_name("PATH")->required();
       app.add_option("-o,--output", a->out, "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves); - writes to stdout")
           ->type_name("PATH")->required();
-      app.add_option("--format", a->format, "Output format png, exr, svg or pdf, for -o - (default png) or a name without one of those extensions")
+      app.add_option("--format", a->format, "Output format png, exr, svg or pdf, for -o - (png when not given) or a name without one of those extensions")
           ->type_name("NAME");
       app.add_option("--scale", a->scale, "Output pixels per spec pixel")->capture_default_str();
       app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
@@ -91,7 +91,7 @@ const splinefig::cli::Registration reg{
               if (!to_stdout) throw;
               throw Failure(splinefig::cli::said_as(e.what(), path, "stdout"), 4);
             }
-            if (to_stdout) splinefig::cli::file_to_stdout(path);
+            if (to_stdout) splinefig::cli::file_to_stdout(scratch, path);
           } catch (const std::length_error& e) {  // an item past the rasterizer's work limit
             throw Failure(a->spec + ": " + e.what());
           }

@@ -2,6 +2,7 @@
 // filter (docs/cli.md, docs/resample.md).
 #include "command.hpp"
 #include "csv.hpp"
+#include "stdio.hpp"
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/resample/resample.hpp>
@@ -18,7 +19,7 @@ using namespace splinefig;
 using splinefig::cli::Failure;
 
 struct Options {
-  std::string in, out, size, scale, filter, edge = "clamp", bits;
+  std::string in, out, size, scale, filter, edge = "clamp", bits, format;
   bool interpolating = false, verbose = false;
   int threads = 0;
 };
@@ -115,25 +116,39 @@ int run(const Options& o) {
     for (double s : scale)
       if (!(s > 0)) throw Failure("--scale: '" + o.scale + "' must be positive");
   }
-  std::string ext = std::filesystem::path(o.out).extension().string();
+  const bool to_stdout = cli::is_stdio(o.out), from_stdin = cli::is_stdio(o.in);
+  std::string ext = to_stdout ? "" : std::filesystem::path(o.out).extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (!o.format.empty()) {
+    std::string f = "." + o.format;
+    for (auto& c : f) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (f != ".png" && f != ".exr" && f != ".tif" && f != ".tiff" && f != ".jpg" && f != ".jpeg")
+      throw Failure("--format " + cli::printable(o.format) + ": not one of png, jpg, tif, exr");
+    const auto kind = [](const std::string& e) { return e == ".jpeg" ? ".jpg" : e == ".tiff" ? ".tif" : e; };
+    if (!ext.empty() && kind(ext) != kind(f))
+      throw Failure("--format " + o.format + ": -o " + o.out + " names another format (" + ext + ")");
+    ext = f;
+  }
+  if (ext.empty() && to_stdout) ext = ".png";
   const bool jpeg = ext == ".jpg" || ext == ".jpeg";
   if (ext != ".png" && ext != ".exr" && ext != ".tif" && ext != ".tiff" && !jpeg)
     throw Failure("-o " + o.out + ": unsupported output format '" + ext + "' (use .png, .jpg, .tif or .exr)");
   if (!o.bits.empty() && o.bits != "8" && o.bits != "16" && o.bits != "float")
     throw Failure("--bits: '" + cli::printable(o.bits) + "' is not 8, 16 or float");
 
-  if (same_file(o.out, o.in)) throw Failure("-o " + o.out + ": it is the input " + o.in + " (write to another file)");
+  if (!to_stdout && !from_stdin && same_file(o.out, o.in)) throw Failure("-o " + o.out + ": it is the input " + o.in + " (write to another file)");
   Image src;
   FileFormat format;
+  cli::Scratch scratch;
+  const std::string in = from_stdin ? cli::stdin_image(scratch) : o.in;
   try {
     std::error_code ec;
-    const auto bytes = std::filesystem::file_size(o.in, ec);
+    const auto bytes = std::filesystem::file_size(in, ec);
     const Progress reading(ec ? 0 : static_cast<long long>(bytes) * 4);  // compressed: a fourth of the samples
     reading.say("reading " + o.in);
-    src = read_image(o.in, ReadMode::linear, &format);
+    src = read_image(in, ReadMode::linear, &format);
   } catch (const UnreadableImage& e) {
-    throw Failure(e.what());
+    throw Failure(from_stdin ? cli::said_as(e.what(), in, "stdin") : e.what());
   }
   const int bits = output_bits(o.bits, ext, format);
   if (size.first == 0) size.first = keep_aspect(size.second, src.height, src.width, "width");
@@ -158,9 +173,13 @@ int run(const Options& o) {
     progress.say("writing " + o.out);
     WriteOptions w;
     w.bits = bits;
-    write_image(o.out, jpeg ? over_white(out) : out, w);
-  } catch (const UnwritableImage& e) {
-    throw Failure(e.what());
+    const std::string path = to_stdout ? scratch.file("stdout" + ext) : o.out;
+    try {
+      write_image(path, jpeg ? over_white(out) : out, *image_format_of("x" + ext), w);
+    } catch (const UnwritableImage& e) {
+      throw Failure(to_stdout ? cli::said_as(e.what(), path, "stdout") : e.what());
+    }
+    if (to_stdout) cli::file_to_stdout(scratch, path);
   } catch (const std::invalid_argument& e) {
     throw Failure(e.what());
   }
@@ -177,8 +196,10 @@ const splinefig::cli::Registration reg{
     "resample", "Resize an image with a spline basis function as the reconstruction filter",
     [](CLI::App& app) {
       auto o = std::make_shared<Options>();
-      app.add_option("IN", o->in, "Input image (PNG or EXR)")->type_name("PATH")->required();
-      app.add_option("-o,--output", o->out, "Output image: .png, .jpg (alpha composited over white) or .exr")->type_name("PATH")->required();
+      app.add_option("IN", o->in, "Input image (PNG, EXR, TIFF or JPEG); - reads it from stdin")->type_name("PATH")->required();
+      app.add_option("-o,--output", o->out, "Output image: .png, .jpg (alpha composited over white), .tif or .exr; - writes to stdout (--format, default png)")->type_name("PATH")->required();
+      app.add_option("--format", o->format, "Output format png, jpg, tif or exr, for -o - or a name without one of those extensions")
+          ->type_name("NAME");
       app.add_option("--size", o->size, "Output size WxH; Wx or xH keeps the aspect ratio")->type_name("WxH");
       app.add_option("--scale", o->scale, "Scale factor S or SX,SY (output size rounded)")->type_name("FLOAT[,FLOAT]");
       app.add_option("--filter", o->filter,
