@@ -208,6 +208,10 @@ TEST_CASE("caption fields: values, number format and errors", "[captions]") {
   CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"argmax_y(0.5, 2)\"\ndecimals = 6") == "P''(0) = 1.000000");
   CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"argmin_y(0.5, 2)\"\ndecimals = 6") == "P''(0) = 2.000000");
   CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"knot(2)\"\ndecimals = 0") == "P''(0) = (2, 0)");
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"points()\"") == "P''(0) = (0, 0), (1, 1), (2.5, 1), (3, 0)");
+  // 20 log10 of y = 2t - t^2: 0 dB at t = 1, 20 log10(3/4) = -2.4988 dB at t = 1/2.
+  CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"db(1)\"") == "P''(0) = 0.00");
+  CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"db(0.5)\"\ndecimals = 4") == "P''(0) = −2.4988");
   // No "−0": -1e-9 at two decimals is 0.00.
   CHECK(caption_of("element = \"axes.lagrange[0]\"\nvalue = \"y(2)\"") == "P''(0) = 0.00");
 
@@ -234,6 +238,12 @@ TEST_CASE("caption fields: values, number format and errors", "[captions]") {
        "c.toml:2: caption_field[0]: value: knot(4) of \"axes.bezier[0]\", which has 4 points"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"b1(0)\"") + axes,
        "c.toml:2: caption_field[0]: value: b1() reads the betas of a local_betas element"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"k(0)\"") + axes,
+       "c.toml:2: caption_field[0]: value: k() reads a kernel or filter element; \"axes.bezier[0]\" is neither"},
+      {head + field("element = \"axes.lagrange[0]\"\nvalue = \"db(0)\"") + axes,
+       "c.toml:2: caption_field[0]: value: db(): y is 0 at t = 0.000000"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"points(1)\"") + axes,
+       "c.toml:5: caption_field[0].value: points() takes 0 arguments, got 1"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"count()\"") + axes,
        "c.toml:2: caption_field[0]: value: count() reads the points of a point set"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"d2(0)\"\ndecimals = 13") + axes,
