@@ -85,10 +85,11 @@ void check_exr_header(const std::string& path) {
           box[k] = static_cast<std::int32_t>(d[i + 4 * k] | d[i + 4 * k + 1] << 8 | d[i + 4 * k + 2] << 16 |
                                              std::uint32_t(d[i + 4 * k + 3]) << 24);
         const std::int64_t w = std::int64_t(box[2]) - box[0] + 1, h = std::int64_t(box[3]) - box[1] + 1;
-        if (w > 0 && h > 0 &&
-            (w > std::int64_t(kMaxImageSide) || h > std::int64_t(kMaxImageSide) || std::uint64_t(w * h) > kMaxImagePixels))
-          bad(path, "image too large (" + std::to_string(w) + " x " + std::to_string(h) +
-                        " pixels declared in the header, limit 2^28 pixels and 65536 a side)");
+        // The words of read_image's own check (read_image.cpp), which comes later for other formats.
+        const std::string size_text = std::to_string(w) + " x " + std::to_string(h) + " pixels";
+        if (w > 0 && h > 0 && (w > std::int64_t(kMaxImageSide) || h > std::int64_t(kMaxImageSide)))
+          bad(path, "image too large (" + size_text + ", limit 65536 a side)");
+        if (w > 0 && h > 0 && std::uint64_t(w * h) > kMaxImagePixels) bad(path, "image too large (" + size_text + ", limit 2^28 pixels)");
         if (std::string problem = detail::origin_problem(box[0], box[1]); !problem.empty()) bad(path, problem);
       }
       i += static_cast<std::size_t>(size);

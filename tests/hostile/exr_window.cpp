@@ -23,7 +23,6 @@ TEST_CASE("an OpenEXR data window over the limits is refused from the header, in
   INFO(err);
   CHECK(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 4);
-  CHECK(err == "splinefig diff: cannot read wide.exr: image too large (16775427 x 3 pixels declared in the header, limit "
-               "2^28 pixels and 65536 a side)\n");
+  CHECK(err == "splinefig diff: cannot read wide.exr: image too large (16775427 x 3 pixels, limit 65536 a side)\n");
   fs::remove_all(dir);
 }
