@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harnesses (clang, ASan + UBSan) and runs each for SECONDS on a working
-# copy of its seed corpus. Fails on any crash, timeout (10 s per input), out-of-memory (2 GB),
+# copy of its seed corpus, with its dictionary (spec: toml.dict and toml_structure.dict joined;
+# compare and resample: png.dict). Fails on any crash, timeout (10 s per input), out-of-memory (2 GB),
 # sanitizer report or leak; the input that caused it is left as BUILD/crash-*/timeout-*/oom-*
 # and becomes a regression test in tests/hostile/.
 #   tests/fuzz/run.sh SECONDS [HARNESS...]     (default: all; BUILD defaults to build-fuzz)
@@ -26,7 +27,11 @@ for h in "${harnesses[@]}"; do
   cp -n "$root/tests/fuzz/corpus/$h/"* "$work/" 2>/dev/null || true
   args=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1
         -artifact_prefix="$build/$h-")
-  [ "$h" = spec ] && args+=(-dict="$root/tests/fuzz/toml.dict")
+  case $h in
+    spec) cat "$root/tests/fuzz/toml.dict" "$root/tests/fuzz/toml_structure.dict" >"$build/spec.dict"
+          args+=(-dict="$build/spec.dict") ;;
+    compare | resample) args+=(-dict="$root/tests/fuzz/png.dict") ;;
+  esac
   [ "${KEEP_GOING:-0}" = 1 ] && args+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   rm -f "$build/$h-"crash-* "$build/$h-"timeout-* "$build/$h-"oom-* "$build/$h-"leak-*
   echo "== fuzz_$h for ${seconds}s"
