@@ -115,3 +115,21 @@ TEST_CASE("a number out of range is said back in its shortest form") {
                  "splinefig diff: --fail must be a finite number >= 0, got -0.5");
   fs::remove_all(dir);
 }
+
+TEST_CASE("a markup error quotes a short escaped excerpt of the label, not all of it") {
+  const fs::path dir = scratch();
+  const std::string big = "$" + std::string(100000, 'A') + "^";
+  check_one_line(render_spec(dir, "big", kCanvas + "[[text]]\ntext = \"" + big + "\"\nat = [1, 1]\n"), 2,
+                 "splinefig render: big.toml:5: text[0].text: \"$" + std::string(39, 'A') +
+                     "...\" (100002 bytes): a dangling ^ at the end");
+  check_one_line(render_spec(dir, "title", "title = \"" + big + "\"\n" + kCanvas), 2,
+                 "splinefig render: title.toml:1: title: \"$" + std::string(39, 'A') +
+                     "...\" (100002 bytes): a dangling ^ at the end");
+  // A cut never splits a character; control characters are escaped.
+  check_one_line(render_spec(dir, "utf8", kCanvas + "[[text]]\ntext = \"" + std::string(39, 'a') + "\u00e9$x^\"\nat = [1, 1]\n"), 2,
+                 "splinefig render: utf8.toml:5: text[0].text: \"" + std::string(39, 'a') +
+                     "...\" (44 bytes): a dangling ^ at the end");
+  check_one_line(render_spec(dir, "esc", kCanvas + "[[text]]\ntext = \"a\\u001b[2J $x^\"\nat = [1, 1]\n"), 2,
+                 "splinefig render: esc.toml:5: text[0].text: \"a\\x1b[2J $x^\": a dangling ^ at the end");
+  fs::remove_all(dir);
+}
