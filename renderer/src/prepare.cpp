@@ -134,6 +134,22 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
       break;
     case K::Ring: {
       if (it.radius == 0) break;
+      if (it.stroke.dashes.empty()) {
+        // A circle's stroke is the annulus between radii r - h and r + h (the circle swept by the
+        // pen): two circles, the inner one reversed, or a disk when r <= h; exact, and a tenth of
+        // the work of stroking the circle's polygon with its joins.
+        const double h = 0.5 * it.stroke.width, r = it.radius;
+        if (h == 0) break;
+        disk_contour(it.centre, r + h, b);
+        if (r > h) {
+          const Vec2 c = it.centre;
+          b.move_to(Vec2{c.x + (r - h), c.y});
+          arc_interior(c, r - h, 0.0, -2 * std::numbers::pi, clip, [&](Vec2 q) { b.line_to(q); });
+          b.close();
+        }
+        s.simple = true;
+        break;
+      }
       // A closed polygon on the circle, fine enough that its chords stay within the arc
       // tolerance of the circle; then stroked like any closed path.
       std::vector<Vec2> pts;
