@@ -1,7 +1,8 @@
 // libFuzzer harness: two image files compared as `splinefig diff` does (as stored and in
 // linear light, with SSIM and FLIP). Input: a 2-byte big-endian length, the first file, the
 // second file. Any input must compare or end in one UnreadableImage line (and no libpng error
-// past the PNG check); anything else is a finding.
+// past the PNG check) or one length_error line (data windows too far apart, as diff refuses
+// them); anything else is a finding.
 #include "fuzz_image_input.hpp"
 
 #include <splinefig/compare/compare.hpp>
@@ -9,6 +10,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace splinefig;
@@ -26,6 +28,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const compare::Comparison c = compare::compare_images(ia, ib, o);
       (void)compare::text_report(c, o, a, b);
       (void)compare::json_report(c, o, a, b);
+    } catch (const std::length_error& e) {  // windows too far apart to compare: diff's one-line refusal
+      if (const char* what = fuzz::bad_message(e.what())) {
+        std::fprintf(stderr, "fuzz_compare: %s: %s\n", what, e.what());
+        std::abort();
+      }
     } catch (const UnreadableImage& e) {
       if (const char* what = fuzz::bad_message(e.what())) {
         std::fprintf(stderr, "fuzz_compare: %s: %s\n", what, e.what());
