@@ -169,7 +169,11 @@ const cli::Registration reg{
       app.footer(
           "A or B (not both) may be -, the image on stdin.\n\n"
           "Example: splinefig diff expected.png actual.png --linear --fail 0.004 --diff-image diff.png");
-      return cli::Runner([args] { return run(*args); });
+      return cli::Runner([args, &app] {
+        if (app.count("--scale") && args->diff_image.empty() && args->triptych.empty())
+          throw cli::Failure("--scale applies only to --diff-image and --triptych");
+        return run(*args);
+      });
     }};
 
 }  // namespace

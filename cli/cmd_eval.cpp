@@ -212,7 +212,11 @@ const splinefig::cli::Registration reg{
           "blank lines and lines starting with # are ignored, and so is a first line of names (x,y). "
           "Output numbers read back to the same double.\n\n"
           "Example: printf 'x,y\\n0,0\\n1,2\\n3,1\\n4,3\\n' | splinefig eval --basis catmull-rom --grain 4");
-      return splinefig::cli::Runner([o] { return run(*o); });
+      return splinefig::cli::Runner([o, &app] {
+        if (app.count("--grain") && o->spacing == "arclength")
+          throw Failure("--grain has no effect with --spacing arclength (its rows are the --count points)");
+        return run(*o);
+      });
     }};
 
 }  // namespace

@@ -26,6 +26,7 @@ struct Options {
   std::string grain = "16";
   std::string output = "curve";
   std::string input, delimiter = "comma";
+  bool grain_given = false;
 };
 
 std::vector<double> velocity(const std::string& text, const char* flag, int dim) {
@@ -59,6 +60,7 @@ int run(const Options& o) {
     throw Failure("--ends: unknown value '" + o.ends + "' (known: relaxed, clamped, periodic)");
   if (o.output != "curve" && o.output != "bspline" && o.output != "bezier")
     throw Failure("--output: unknown value '" + o.output + "' (known: curve, bspline, bezier)");
+  if (o.grain_given && o.output != "curve") throw Failure("--grain applies only to --output curve");
   if (o.ends != "clamped") {
     if (!o.start_velocity.empty()) throw Failure("--start-velocity applies only to --ends clamped");
     if (!o.end_velocity.empty()) throw Failure("--end-velocity applies only to --ends clamped");
@@ -138,7 +140,10 @@ Runner setup(CLI::App& app) {
       "cubic spline P(t), t in [0, n], with P(i) = S_i through the B-spline 1-4-1 system. relaxed and "
       "clamped need at least 2 points, periodic at least 3 with the last equal to the first.\n\n"
       "Example: printf '0,0\\n1,2\\n3,1\\n' | splinefig interp --output bezier");
-  return [o] { return run(*o); };
+  return [o, &app] {
+    o->grain_given = app.count("--grain") > 0;
+    return run(*o);
+  };
 }
 
 const Registration reg{"interp", "Interpolating cubic spline through data points (relaxed, clamped, periodic)",

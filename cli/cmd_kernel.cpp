@@ -147,6 +147,14 @@ const splinefig::cli::Registration reg{
         o->range_given = app.count("--from") + app.count("--to") + app.count("--step") > 0;
         o->input_given = app.count("INPUT") > 0;
         if (o->report && o->input_given) throw Failure("--report takes no input file");
+        // A flag that would change nothing is refused rather than ignored.
+        if (o->report && o->response)
+          throw Failure("--report and --response cannot be combined (--report prints the filter's numbers, "
+                        "--response its f,|K(f)| lines)");
+        if (o->report && o->range_given)
+          throw Failure("--report takes no --from, --to or --step (it reports on the whole filter)");
+        if (app.count("--delimiter") && !o->input_given)
+          throw Failure("--delimiter applies only to an INPUT file of values");
         return run(*o);
       });
     }};
