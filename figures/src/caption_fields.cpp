@@ -209,6 +209,20 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
     if (const auto* fc = std::get_if<FilterCurveElement>(&e)) return {{fc->filter(f.args[0]), 0}, false};
     fail(f, "value: k() reads a kernel or filter element; \"" + f.element + "\" is neither");
   }
+  if (const auto* c = std::get_if<CurveElement>(&e); c && (fn == "point" || fn == "x" || fn == "y")) {
+    // A spline curve: built as the figure builds it, evaluated at t in [0, its piece count].
+    Points knots(2);
+    for (Vec2 k : c->knots) knots.push_back(std::array<double, 2>{k.x, k.y});
+    const Curve curve = make_curve(c->basis, knots, c->ends);
+    const double t = f.args[0], t1 = static_cast<double>(curve.segments());
+    if (!(t >= 0 && t <= t1))
+      fail(f, "value: " + fn + "(): t = " + caption_number(t, 6) + " is outside the curve's parameter range [0, " +
+                  caption_number(t1, 6) + "]");
+    std::array<double, 2> xy{};
+    splinefig::evaluate(curve, t, 0, xy);
+    if (fn == "point") return {{xy[0], xy[1]}, true};
+    return {{fn == "x" ? xy[0] : xy[1], 0}, false};
+  }
   if (!is_generated(e))
     fail(f, "element: \"" + f.element + "\" is not a generated element (bezier, lagrange, interp, relaxed_bspline, "
             "subdivision, local_betas, ...): " + fn + "() reads generated data");

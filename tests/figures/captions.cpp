@@ -438,3 +438,16 @@ TEST_CASE("the point lists of s003-fig09, s003-fig13, ends, arclength and multip
         if (auto* s = std::get_if<SeriesElement>(&e); s && !s->points.empty()) s->points[1] = {-1.25, 2};
   CHECK(contains(built_caption(moved), "(1, −1), (−1.25, 2), (1, 4)"));
 }
+
+TEST_CASE("bias' caption prints where the b1 = 5 curve starts and ends on the end legs", "[captions]") {
+  const std::string caption = built_caption(builtin("bias"));
+  INFO(caption);
+  // The memo's B_{b1,b2} with doubled end knots: the curve starts at ((d - 2) B0 + 2 B1) / d and
+  // ends at (2 b1^3 B5 + (d - 2 b1^3) B6) / d, d = b2 + 2 b1^3 + 4 b1^2 + 4 b1 + 2 (372 for b1 = 5).
+  const double b1 = 5, b2 = 0, d = b2 + 2 * b1 * b1 * b1 + 4 * b1 * b1 + 4 * b1 + 2;
+  const Vec2 B0{0, 0}, B1{1, 2}, B5{5, 2}, B6{6, 0};
+  const Vec2 start = (1 / d) * ((d - 2) * B0 + 2 * B1), end = (1 / d) * (2 * b1 * b1 * b1 * B5 + (d - 2 * b1 * b1 * b1) * B6);
+  CHECK(d == 372);
+  CHECK(contains(caption, "(b₁ = 5: it starts at " + fmt(start, 2) + " and ends at " + fmt(end, 2) +
+                              ", on the leg from (6, 0) to (5, 2))"));
+}

@@ -20,6 +20,7 @@ namespace {
 RenderedFigure bias_curve_alone(const std::string& basis) {
   FigureSpec spec = load_spec(std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/bias.toml");
   spec.show_title = false;
+  spec.caption_fields.clear();  // they name the curves removed here
   for (auto& item : spec.items) {
     auto* ax = std::get_if<AxesSpec>(&item);
     if (!ax) continue;
