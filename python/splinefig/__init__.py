@@ -25,9 +25,38 @@ __all__ = [
     "evaluate", "sample_count", "arclength_points", "arclength", "interpolate",
     "Scene", "render_spec", "render_figure", "figure_names", "specs_dir",
     "resample", "image_buffer", "compare", "difference_image", "triptych", "read_image", "write_image",
+    "Image",
 ]
 
 Kernel = _core.Kernel
+
+
+class Image(np.ndarray):
+    """An image array as render_spec, render_figure, Scene.render and read_image return it: a
+    numpy float32 array in every respect, which also knows whether its values are linear light
+    or sRGB-encoded (`encoding`), and so shows itself in a notebook (IPython, Jupyter): its
+    _repr_png_ is the PNG that write_image writes (8-bit sRGB, straight alpha). An array that
+    is not an image of 1 to 4 channels (a slice, a reduction) shows as an array."""
+
+    def __new__(cls, array: Any, encoding: str = "linear") -> "Image":
+        obj = np.asarray(array).view(cls)
+        obj.encoding = _choice(encoding, "encoding", ("linear", "srgb"))
+        return obj
+
+    def __array_finalize__(self, obj: Any) -> None:
+        self.encoding = getattr(obj, "encoding", "linear")
+
+    def _repr_png_(self) -> Optional[bytes]:
+        channels = 1 if self.ndim == 2 else (self.shape[2] if self.ndim == 3 else 0)
+        if (self.dtype.kind != "f" or not 1 <= channels <= 4 or self.shape[0] < 1 or self.shape[1] < 1
+                or self.size > (1 << 30)):
+            return None
+        import tempfile
+        with tempfile.TemporaryDirectory(prefix="splinefig-repr-") as d:
+            path = os.path.join(d, "image.png")
+            write_image(path, np.asarray(self, dtype=np.float32), encoding=self.encoding)
+            with open(path, "rb") as f:
+                return f.read()
 _PathLike = Union[str, "os.PathLike[str]"]
 
 
@@ -576,7 +605,7 @@ class Scene:
         sRGB-encoded values for blend="srgb")."""
         t = _int(threads, "threads", 0, 256)
         with self._lock:
-            return self._s.render(t)
+            return Image(self._s.render(t), self._s.blend)
 
     def render_rgba8(self, *, threads: int = 0, clear: Sequence[int] = (255, 255, 255)) -> np.ndarray:
         """The picture as an (h, w, 4) uint8 array, sRGB with straight alpha (a PNG's or
@@ -628,8 +657,8 @@ def render_spec(spec: Any, *, scale: float = 1.0, threads: int = 0, text: Option
     t = _int(threads, "threads", 0, 256)
     if text is not None:
         name = _str(spec, "spec") if spec is not None else "<text>"
-        return _core.render_spec_text(_str(text, "text"), name, ".", s, t)
-    return _core.render_spec_file(_path(spec, "spec"), s, t)
+        return Image(_core.render_spec_text(_str(text, "text"), name, ".", s, t))
+    return Image(_core.render_spec_file(_path(spec, "spec"), s, t))
 
 
 def render_figure(name: str, *, scale: float = 1.0, threads: int = 0) -> np.ndarray:
@@ -648,6 +677,7 @@ def read_image(path: _PathLike, *, linear: bool = False, return_encoding: bool =
     PNGs stay encoded, as idiff compares them) or, with linear=True, decoded to linear light
     with associated alpha (as resampling and drawing need)."""
     a, enc = _core.read_image(_path(path, "path"), bool(linear))
+    a = Image(a, enc)
     return (a, enc) if return_encoding else a
 
 

@@ -8,6 +8,11 @@ import numpy.typing as npt
 __version__: str
 
 _Path = Union[str, os.PathLike[str]]
+
+class Image(np.ndarray):
+    encoding: Literal["linear", "srgb"]
+    def __new__(cls, array: Any, encoding: str = ...) -> Image: ...
+    def _repr_png_(self) -> Optional[bytes]: ...
 _Color = Union[str, Sequence[float], npt.ArrayLike]
 _Points = npt.ArrayLike
 _Ends = Literal["open", "double", "doubled", "closed"]
