@@ -49,12 +49,6 @@ bool valid_depth(int colour_type, int depth) {
   }
 }
 
-// Bytes of filtered scanlines: each row is one filter byte plus ceil(w * bits / 8) bytes.
-std::uint64_t pass_bytes(std::uint64_t w, std::uint64_t h, std::uint64_t bits_per_pixel) {
-  if (w == 0 || h == 0) return 0;
-  return h * (1 + (w * bits_per_pixel + 7) / 8);
-}
-
 // The passes of the image's filtered scanlines (one, or Adam7's seven less the empty ones):
 // bytes per row (the filter byte included) and rows.
 struct Pass {
