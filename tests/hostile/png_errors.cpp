@@ -56,7 +56,7 @@ void check_png_refused(const std::string& name, const std::string& bytes, const 
 }  // namespace
 
 TEST_CASE("a PNG row filter type over 4 is refused by the check, in plain and Adam7 images") {
-  check_png_refused("filter5", png(2, 1, 2, "\x05" + std::string(6, '\0')),
+  check_png_refused("filter5", png(2, 1, 2, std::string(1, '\x05') + std::string(6, '\0')),
                 "row filter type 5 at byte 0 of the pixel data, not 0 to 4");
   check_png_refused("filter_row2", png(2, 2, 2, kRgbRow + "\x07" + std::string(6, '\0')),
                 "row filter type 7 at byte 7 of the pixel data, not 0 to 4");
@@ -86,7 +86,7 @@ TEST_CASE("PNG chunks libpng stops at are refused by the check") {
 TEST_CASE("valid PNGs the new checks look at still read: every filter type, Adam7, a palette") {
   const fs::path dir = scratch();
   // Rows with filters 1 to 4 over zero bytes decode to zeros.
-  write_file(dir / "filters.png", png(2, 4, 2, "\x01" + std::string(6, '\0') + "\x02" + std::string(6, '\0') + "\x03" +
+  write_file(dir / "filters.png", png(2, 4, 2, std::string(1, '\x01') + std::string(6, '\0') + "\x02" + std::string(6, '\0') + "\x03" +
                                                    std::string(6, '\0') + "\x04" + std::string(6, '\0')));
   write_file(dir / "adam7.png", png(2, 2, 2, std::string(4, '\0') + "\x04" + std::string(3, '\0') + std::string(7, '\0'), "", "", true));
   write_file(dir / "palette.png", png(2, 1, 3, std::string(3, '\0'), chunk("PLTE", "\x10\x20\x30") + chunk("tEXt", std::string("k\0v", 3))));
