@@ -43,9 +43,9 @@ TEST(MatchesReferenceOnASpec, AChangedSpecFails) {
   std::ostringstream s;
   s << in.rdbuf();
   std::string text = s.str();
-  const auto red = text.find("\"#d62728\"");
-  ASSERT_NE(red, std::string::npos);
-  text.replace(red, 9, "\"#2ca02c\"");
+  const auto orange = text.find("\"#e69f00\"");  // the second half's colour
+  ASSERT_NE(orange, std::string::npos);
+  text.replace(orange, 9, "\"#2ca02c\"");
   { std::ofstream(dir / "green.toml") << text; }
   ::setenv("SPLINEFIG_TEST_RESULTS", (dir / "results").c_str(), 1);
   EXPECT_NONFATAL_FAILURE(
