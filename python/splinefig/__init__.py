@@ -128,15 +128,33 @@ def _points(value: Any, name: str, min_dim: int = 1) -> np.ndarray:
     return a
 
 
-def _image(value: Any, name: str) -> np.ndarray:
-    """An (h, w) or (h, w, c) float32/float64 image as C-contiguous float32."""
+def _image(value: Any, name: str, srgb_ints: bool = False) -> np.ndarray:
+    """An (h, w) or (h, w, c) float32/float64 image as C-contiguous float32. With srgb_ints,
+    a uint8 or uint16 array too: sRGB-encoded values with straight alpha (a PNG's, PIL's),
+    decoded to linear light with associated alpha as read_image(linear=True) decodes a file."""
     a = np.asarray(value) if not isinstance(value, (str, bytes)) else None
-    if a is None or a.dtype not in (np.float32, np.float64):
+    ints = srgb_ints and a is not None and a.dtype in (np.uint8, np.uint16)
+    if a is None or (a.dtype not in (np.float32, np.float64) and not ints):
         what = type(value).__name__ if a is None else f"dtype {a.dtype}"
-        raise TypeError(f"{name}: expected a float32 or float64 array, got {what}")
+        also = ", or a uint8 or uint16 one of sRGB values" if srgb_ints else ""
+        raise TypeError(f"{name}: expected a float32 or float64 array{also}, got {what}")
     if a.ndim not in (2, 3) or a.shape[0] < 1 or a.shape[1] < 1 or (a.ndim == 3 and a.shape[2] < 1):
         raise ValueError(f"{name}: expected an (h, w) or (h, w, c) image, got shape {a.shape}")
-    return np.ascontiguousarray(a, dtype=np.float32)
+    return _srgb_ints_to_linear(a) if ints else np.ascontiguousarray(a, dtype=np.float32)
+
+
+def _srgb_ints_to_linear(a: np.ndarray) -> np.ndarray:
+    # The sRGB curve of every code (v / 255 or v / 65535) in double, as image/src/srgb.cpp
+    # computes it; colour times the straight alpha (the last of 2 or 4 channels), rounded once.
+    top = float(np.iinfo(a.dtype).max)
+    v = np.arange(int(top) + 1, dtype=np.float64) / top
+    curve = np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)
+    out = curve[a]
+    if a.ndim == 3 and a.shape[2] in (2, 4):
+        alpha = a[..., -1:] / top
+        out[..., :-1] *= alpha
+        out[..., -1:] = alpha
+    return np.ascontiguousarray(out, dtype=np.float32)
 
 
 def _kernel(value: Any, name: str = "basis") -> "Kernel":
@@ -710,9 +728,12 @@ def resample(image: Any, *, size: Any = None, scale: Any = None, filter: Any = "
     size=(width, height), or scale=s or (sx, sy) with the size rounded. The result has the
     input's dtype (the arithmetic is the library's, in float32) and number of axes.
     A C-contiguous float32 array is read in place (it must not change during the call); any
-    other (float64, another layout) is converted to one once."""
-    a = _image(image, "image")
+    other (float64, another layout) is converted to one once. A uint8 or uint16 array (PIL's)
+    holds sRGB values with straight alpha: it is decoded to linear light first, as
+    read_image(linear=True) decodes a PNG, and the result is that linear float32 image."""
+    a = _image(image, "image", srgb_ints=True)
     dtype = np.asarray(image).dtype
+    dtype = np.float32 if dtype in (np.uint8, np.uint16) else dtype
     h, w = a.shape[0], a.shape[1]
     if (size is None) == (scale is None):
         raise ValueError("size, scale: give exactly one")

@@ -74,7 +74,7 @@ CASES = [
     (lambda: splinefig.render_spec("x", text="[canvas]\nwidth = 10\n", scale=0), ValueError, r"scale: "),
     (lambda: splinefig.resample(IMG), ValueError, r"size, scale: give exactly one"),
     (lambda: splinefig.resample(IMG, size=(4, 4), scale=2), ValueError, r"size, scale: "),
-    (lambda: splinefig.resample(IMG.astype(np.uint8), size=(4, 4)), TypeError, r"image: expected a float32 or float64 array, got dtype uint8"),
+    (lambda: splinefig.resample(IMG.astype(np.int32), size=(4, 4)), TypeError, r"image: expected a float32 or float64 array, or a uint8 or uint16 one of sRGB values, got dtype int32"),
     (lambda: splinefig.resample([[1]], size=(4, 4)), TypeError, r"image: "),
     (lambda: splinefig.resample(np.zeros(5, np.float32), size=(4, 4)), ValueError, r"image: .*shape \(5,\)"),
     (lambda: splinefig.resample(np.zeros((0, 4), np.float32), size=(4, 4)), ValueError, r"image: "),
