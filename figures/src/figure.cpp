@@ -64,17 +64,30 @@ void draw_item(const ImageItem& it, Painter& p) {
 
 // Lays one panel out in its cell and draws it: generated elements computed, the box, ranges
 // and ticks, curves sampled at the output scale, then guides under, data, guides over, legend.
-AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, double scale, Painter& p, Occupancy& occ, const Guides& g) {
+AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, double scale, Painter& p, Occupancy& occ,
+                   const Guides& g) {
   PreparedAxes prepared = prepare_axes(spec);
   const AxesSpec& ax = prepared.axes;
-  const Panel panel = layout_panel(prepared, cell, p, g);
+  const Panel panel = layout_panel(prepared, cell, canvas.width(), canvas.height(), p, g);
   sample_paths(prepared, panel.map, 0.05 / scale);
   draw_under(ax, panel, p, g);
   AxesInfo info;
   std::vector<Entry> entries;
+  const std::size_t first_op = p.ops().size();
   draw_elements(prepared, panel, p, occ, info.series, entries);
-  draw_over(ax, panel, cell, p, g);
-  draw_legend(ax, panel, entries, p, occ, g);
+  const std::size_t end_op = p.ops().size();
+  draw_over(ax, panel, p, g);
+  const std::optional<Rect> legend = draw_legend(ax, panel, entries, p, occ, g);
+  auto add_box = [&](const std::string& what, const Rect& r) {
+    info.text_boxes.push_back({what, {r.left * scale, r.top * scale, r.right * scale, r.bottom * scale}});
+  };
+  for (const auto* v : {&panel.x_tick_labels, &panel.y_tick_labels, &panel.labels})
+    for (const PlacedText& t : *v)
+      if (!t.text.empty()) add_box(t.what, t.rect);
+  if (legend) add_box("legend", *legend);
+  for (std::size_t i = first_op; i < end_op; ++i)
+    if (const auto* t = std::get_if<TextOp>(&p.ops()[i]))
+      add_box("text", text_rect(p.measure(t->text, t->font), t->at, t->anchor, t->angle));
   info.pixel_box = {panel.box.left * scale, panel.box.top * scale, panel.box.right * scale, panel.box.bottom * scale};
   info.x_range = panel.x_range;
   info.y_range = panel.y_range;
@@ -120,7 +133,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
       std::visit(
           [&](const auto& it) {
             if constexpr (std::is_same_v<std::decay_t<decltype(it)>, AxesSpec>)
-              info.axes.push_back(draw_axes(it, grid.cell(it), scale, p, occ, g));
+              info.axes.push_back(draw_axes(it, grid.cell(it), {0, 0, W, H}, scale, p, occ, g));
             else
               draw_item(it, p);
           },

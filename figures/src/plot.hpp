@@ -10,6 +10,8 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <string>
 
 namespace splinefig::figures::detail {
 
@@ -47,8 +49,30 @@ struct Guides {
   double tick_length = 5;
 };
 
+// A text the layout placed, with the rectangle it covers (layout units: its advance width
+// and its ink's ascent and descent, turned with it).
+struct PlacedText {
+  std::string what;  // "title", "x label", "y label", "x tick label", "y tick label"
+  std::string text;
+  Vec2 at;
+  Font font;
+  TextAnchor anchor;
+  double angle = 0;
+  Rect rect;
+};
+
+// The rectangle covered by a text of extent `e` anchored at `at` and turned by `angle` degrees
+// counter-clockwise about it, as the painter draws it.
+Rect text_rect(const render::TextExtent& e, Vec2 at, TextAnchor a, double angle = 0);
+// Whether two rectangles overlap or come closer than `gap`.
+bool rects_meet(const Rect& a, const Rect& b, double gap = 0);
+
 struct Panel {
   Rect box;
+  // The guides' texts: a label per tick (in the ticks' order, maybe empty), then the axis
+  // labels and the title.
+  std::vector<PlacedText> x_tick_labels, y_tick_labels, labels;
+  std::optional<Rect> legend;     // where a legend outside the box goes
   PixelMap map;
   std::vector<Tick> x_ticks, y_ticks;
   std::vector<double> x_minor, y_minor;  // unlabelled: 2..9 times each decade of a log axis
@@ -84,8 +108,16 @@ double tick_pixel(const AxisMap& m, double value);
 // Data bounds of the elements (for axes without a range).
 void data_bounds(const PreparedAxes& ax, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& has_x, bool& has_y);
 
-// Lays the panel out inside `cell`.
-Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter& p, const Guides& g);
+// Lays the panel out inside `cell` on a canvas of `canvas_w` x `canvas_h` layout units: every
+// text box measured, ticks thinned where their labels would meet, the box shrunk to leave room
+// for the texts; throws std::runtime_error (the canvas leaves too small a plot box) when the
+// texts cannot all be placed apart from each other and inside the canvas.
+Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas_w, double canvas_h, const Painter& p,
+                   const Guides& g);
+// The smallest plot box a panel can have (each way).
+inline constexpr double kMinPlotBox = 24;
+// The least gap between neighbouring tick labels, and between other text boxes.
+inline constexpr double kTickLabelGap = 4, kTextGap = 2;
 
 // Draws grid and zero lines (under the data).
 void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
@@ -93,9 +125,12 @@ void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides
 void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occupancy& occ,
                    std::vector<SeriesInfo>& series, std::vector<Entry>& legend);
 // Frame, ticks, tick labels, axis labels, title (over the data), then the legend.
-void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter& p, const Guides& g);
-void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
-                 const Guides& g);
+void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
+// Returns the legend's rectangle (none when nothing is drawn).
+std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
+                                Occupancy& occ, const Guides& g);
+// The inset of a legend inside the plot box.
+inline constexpr double kLegendInset = 10;
 // The legend's width and height for entries with these labels.
 std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const Painter& p,
                                   const Guides& g);

@@ -42,7 +42,7 @@ void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides
   }
 }
 
-void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter& p, const Guides& g) {
+void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g) {
   const Rect& b = panel.box;
   if (ax.frame != Frame::None) {
     // Spines lie just outside the box, on whole pixels at 1x: crisp at any integer scale.
@@ -52,16 +52,17 @@ void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter
     } else {
       p.stroke({{l, t}, {l, bo}, {r, bo}}, false, hairline(), g.axis);
     }
-    Font tf = g.tick_font;
-    for (const auto& tick : panel.x_ticks) {
-      double x = tick_pixel(panel.map.x, tick.value);
+    // Each tick, then its label where the layout placed it (plot_layout.cpp).
+    auto label = [&](const PlacedText& t) { p.text(t.text, t.at, t.font, t.anchor, t.angle); };
+    for (size_t i = 0; i < panel.x_ticks.size(); ++i) {
+      double x = tick_pixel(panel.map.x, panel.x_ticks[i].value);
       p.stroke({{x, b.bottom + 1}, {x, b.bottom + 1 + g.tick_length}}, false, hairline(), g.axis);
-      p.text(tick.label, {x, b.bottom + 1 + g.tick_length + 3}, tf, {render::HAlign::Center, render::VAlign::Top});
+      label(panel.x_tick_labels.at(i));
     }
-    for (const auto& tick : panel.y_ticks) {
-      double y = tick_pixel(panel.map.y, tick.value);
+    for (size_t i = 0; i < panel.y_ticks.size(); ++i) {
+      double y = tick_pixel(panel.map.y, panel.y_ticks[i].value);
       p.stroke({{b.left - 1, y}, {b.left - 1 - g.tick_length, y}}, false, hairline(), g.axis);
-      p.text(tick.label, {b.left - 1 - g.tick_length - 4, y}, tf, {render::HAlign::Right, render::VAlign::Middle});
+      label(panel.y_tick_labels.at(i));
     }
     // Minor ticks: three fifths as long, no label.
     const double minor = 0.6 * g.tick_length;
@@ -80,22 +81,8 @@ void draw_over(const AxesSpec& ax, const Panel& panel, const Rect& cell, Painter
       p.fill({{{x, y - 6}, {x - 4, y}, {x + 4, y}}}, render::FillRule::NonZero, g.axis);
     }
   }
-  if (!ax.x.label.empty()) {
-    double y = cell.bottom;
-    p.text(ax.x.label, {0.5 * (b.left + b.right), y}, g.label_font, {render::HAlign::Center, render::VAlign::Bottom});
-  }
-  if (!ax.y.label.empty() && ax.y.label_rotated) {
-    // Turned a quarter to read upwards, centred on the box, its ink starting at the cell's
-    // left edge (the layout keeps that strip free).
-    p.text(ax.y.label, {cell.left, 0.5 * (b.top + b.bottom)}, g.label_font, {render::HAlign::Center, render::VAlign::Top},
-           90);
-  } else if (!ax.y.label.empty()) {
-    p.text(ax.y.label, {std::max(cell.left, b.left - 30), b.top - 8}, g.label_font,
-           {render::HAlign::Left, render::VAlign::Bottom});
-  }
-  if (!ax.title.empty()) {
-    p.text(ax.title, {0.5 * (b.left + b.right), cell.top}, g.title_font, {render::HAlign::Center, render::VAlign::Top});
-  }
+  // The axis labels and the title, where the layout placed them.
+  for (const PlacedText& t : panel.labels) p.text(t.text, t.at, t.font, t.anchor, t.angle);
 }
 
 Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>& candidates, const Rect& box,
@@ -145,9 +132,9 @@ std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::str
   return {std::ceil(kPad + cols * col_w - kColumnGap + kPad), std::ceil(kPad + title_h + kRow * rows + kPad - 4)};
 }
 
-void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p, Occupancy& occ,
-                 const Guides& g) {
-  if (entries.empty() || ax.legend == LegendPlace::None) return;
+std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
+                                Occupancy& occ, const Guides& g) {
+  if (entries.empty() || ax.legend == LegendPlace::None) return std::nullopt;
   const Font& f = g.legend_font;
   const double pad = kPad, sample = kSample, gap = kGap, row = kRow;
   Font tf = f;
@@ -161,7 +148,7 @@ void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry
   const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(entries.size())));
   const double col_w = sample + gap + text_w + kColumnGap;
   const Rect& b = panel.box;
-  const double inset = 10;
+  const double inset = kLegendInset;
   struct Spot {
     LegendPlace place;
     double x, y;
@@ -213,6 +200,7 @@ void draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry
     if (e.markers) p.marker(e.marker, {0.5 * (sx0 + sx1), my}, e.marker_size, e.color);
     p.text(e.label, {sx1 + gap, my}, f, {render::HAlign::Left, render::VAlign::Middle});
   }
+  return Rect{x, y, x + w, y + h};
 }
 
 }  // namespace splinefig::figures::detail

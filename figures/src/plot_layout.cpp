@@ -156,7 +156,189 @@ double tick_pixel(const AxisMap& m, double value) {
   return m.to_pixel(value);
 }
 
-Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter& p, const Guides& g) {
+Rect text_rect(const render::TextExtent& e, Vec2 at, TextAnchor a, double angle) {
+  double ox = 0, oy = 0;  // as the painter aligns a label (painter.cpp, draw_text)
+  if (a.halign == render::HAlign::Center) ox = -0.5 * e.width;
+  else if (a.halign == render::HAlign::Right) ox = -e.width;
+  if (a.valign == render::VAlign::Top) oy = e.ascent;
+  else if (a.valign == render::VAlign::Middle) oy = 0.5 * (e.ascent - e.descent);
+  else if (a.valign == render::VAlign::Bottom) oy = -e.descent;
+  // In the label's frame (y down) it covers [ox, ox + width] x [oy - ascent, oy + descent].
+  const double u0 = ox, u1 = ox + e.width, v0 = oy - e.ascent, v1 = oy + e.descent;
+  if (angle == 0) return {at.x + u0, at.y + v0, at.x + u1, at.y + v1};
+  const double r = angle * 3.14159265358979323846 / 180;
+  const double c = angle == 90 ? 0.0 : std::cos(r), sn = angle == 90 ? 1.0 : std::sin(r);
+  Rect out{1e300, 1e300, -1e300, -1e300};
+  for (double u : {u0, u1})
+    for (double v : {v0, v1}) {
+      const double x = at.x + c * u + sn * v, y = at.y - sn * u + c * v;
+      out = {std::min(out.left, x), std::min(out.top, y), std::max(out.right, x), std::max(out.bottom, y)};
+    }
+  return out;
+}
+
+bool rects_meet(const Rect& a, const Rect& b, double gap) {
+  return a.left < b.right + gap && b.left < a.right + gap && a.top < b.bottom + gap && b.top < a.bottom + gap;
+}
+
+namespace {
+
+// Text smaller than this is not made by shrinking a title or an axis label.
+constexpr double kMinTextSize = 9;
+
+PlacedText placed(std::string what, const std::string& text, Vec2 at, const Font& f, TextAnchor a, const Painter& p,
+                  double angle = 0) {
+  PlacedText t{std::move(what), text, at, f, a, angle, {}};
+  t.rect = text.empty() ? Rect{at.x, at.y, at.x, at.y} : text_rect(p.measure(text, f), at, a, angle);
+  return t;
+}
+
+PlacedText x_tick_text(const Tick& t, double x, const Rect& b, const Painter& p, const Guides& g) {
+  return placed("x tick label", t.label, {x, b.bottom + 1 + g.tick_length + 3}, g.tick_font,
+                {render::HAlign::Center, render::VAlign::Top}, p);
+}
+PlacedText y_tick_text(const Tick& t, double y, const Rect& b, const Painter& p, const Guides& g) {
+  return placed("y tick label", t.label, {b.left - 1 - g.tick_length - 4, y}, g.tick_font,
+                {render::HAlign::Right, render::VAlign::Middle}, p);
+}
+
+struct AxisSide {
+  const AxisSpec& spec;
+  char name;  // 'x' or 'y'
+  std::array<double, 2> range;
+  AxisMap map(const Rect& b) const {
+    return name == 'x' ? AxisMap{spec.scale, range[0], range[1], b.left, b.right, 'x'}
+                       : AxisMap{spec.scale, range[0], range[1], b.bottom, b.top, 'y'};
+  }
+};
+
+// The labelled ticks' texts inside the box, in order along the axis.
+std::vector<PlacedText> tick_texts(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b,
+                                   const Painter& p, const Guides& g) {
+  const AxisMap m = side.map(b);
+  const double lo = std::min(m.p0, m.p1) - 0.01, hi = std::max(m.p0, m.p1) + 0.01;
+  std::vector<std::pair<double, PlacedText>> at;
+  for (const Tick& t : ticks) {
+    if (t.label.empty()) continue;
+    const double v = tick_pixel(m, t.value);
+    if (!(v >= lo && v <= hi)) continue;
+    at.emplace_back(v, side.name == 'x' ? x_tick_text(t, v, b, p, g) : y_tick_text(t, v, b, p, g));
+  }
+  std::sort(at.begin(), at.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<PlacedText> out;
+  for (auto& [v, t] : at) out.push_back(std::move(t));
+  return out;
+}
+
+// Whether two neighbouring tick labels come closer than kTickLabelGap.
+bool tick_labels_meet(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b, const Painter& p,
+                      const Guides& g) {
+  const std::vector<PlacedText> t = tick_texts(side, ticks, b, p, g);
+  for (size_t i = 0; i + 1 < t.size(); ++i) {
+    const Rect &r = t[i].rect, &s = t[i + 1].rect;
+    if (side.name == 'x' ? r.right + kTickLabelGap > s.left : r.bottom + kTickLabelGap > s.top) return true;
+  }
+  return false;
+}
+
+size_t labelled(const std::vector<Tick>& ticks) {
+  return static_cast<size_t>(std::count_if(ticks.begin(), ticks.end(), [](const Tick& t) { return !t.label.empty(); }));
+}
+
+// Coarser sets of ticks, finest first, each with at least two labels: automatic ticks of a
+// linear or dB axis take the next steps of 1, 2, 5 times a power of ten; ticks that are
+// given, forced by a tick step, or at the decades of a log axis keep every k-th.
+std::vector<std::vector<Tick>> coarser_ticks(const AxisSide& side, const std::vector<Tick>& ticks) {
+  std::vector<std::vector<Tick>> out;
+  const AxisSpec& axis = side.spec;
+  if (!axis.ticks && !axis.tick_step && axis.scale != Scale::Log && ticks.size() >= 2) {
+    double step = std::abs(ticks[1].value - ticks[0].value);
+    for (int i = 0; i < 40 && std::isfinite(step) && step > 0; ++i) {
+      const double p10 = std::pow(10.0, std::floor(std::log10(step) + 1e-9)), m = step / p10;
+      step = (m < 1.5 ? 2 : m < 3.5 ? 5 : 10) * p10;
+      std::vector<Tick> t = nice_ticks(side.range[0], side.range[1], 0, step);
+      if (axis.scale == Scale::Decibel)
+        for (auto& k : t) k.label += " dB";
+      if (labelled(t) < 2) break;
+      out.push_back(std::move(t));
+    }
+    return out;
+  }
+  for (size_t k = 2; k < ticks.size(); ++k) {
+    std::vector<Tick> t;
+    for (size_t i = 0; i < ticks.size(); i += k) t.push_back(ticks[i]);
+    if (labelled(t) < 2) break;
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+// The ticks, or the first coarser set whose labels stay apart in this box (the coarsest if
+// none does: the layout then refuses).
+std::vector<Tick> thin_ticks(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b, const Painter& p,
+                             const Guides& g) {
+  if (!tick_labels_meet(side, ticks, b, p, g)) return ticks;
+  const std::vector<std::vector<Tick>> coarser = coarser_ticks(side, ticks);
+  for (const auto& t : coarser)
+    if (!tick_labels_meet(side, t, b, p, g)) return t;
+  return coarser.empty() ? ticks : coarser.back();
+}
+
+// The least length of the axis (layout units) at which the coarsest set of ticks keeps its
+// neighbouring labels apart.
+double tick_length_needed(const AxisSide& side, const std::vector<Tick>& ticks, const Painter& p, const Guides& g) {
+  const std::vector<std::vector<Tick>> coarser = coarser_ticks(side, ticks);
+  const std::vector<Tick>& t = coarser.empty() ? ticks : coarser.back();
+  const AxisMap m = side.map({0, 0, 1, 1});  // unit length: pixel = fraction of the axis
+  std::vector<std::pair<double, double>> at;  // (fraction along the axis, label extent)
+  for (const Tick& k : t) {
+    if (k.label.empty()) continue;
+    const double f = tick_pixel(m, k.value), lo = std::min(m.p0, m.p1), hi = std::max(m.p0, m.p1);
+    if (!(f >= lo - 1e-9 && f <= hi + 1e-9)) continue;
+    const render::TextExtent e = p.measure(k.label, g.tick_font);
+    at.emplace_back(f, side.name == 'x' ? e.width : e.ascent + e.descent);
+  }
+  std::sort(at.begin(), at.end());
+  double need = 0;
+  for (size_t i = 0; i + 1 < at.size(); ++i) {
+    const double df = at[i + 1].first - at[i].first;
+    if (df > 0) need = std::max(need, (0.5 * (at[i].second + at[i + 1].second) + kTickLabelGap) / df);
+  }
+  return std::ceil(need);
+}
+
+std::string px(double v) { return std::to_string(static_cast<long long>(std::ceil(std::max(0.0, v) - 1e-9))); }
+
+// Shifts a text along x (or y) into [lo, hi], shrinking its font first if it is longer than
+// that (not below kMinTextSize). False if it cannot fit.
+bool fit_text(PlacedText& t, double lo, double hi, bool along_x, const Painter& p) {
+  if (t.text.empty()) return true;
+  auto extent = [&] { return along_x ? t.rect.width() : t.rect.height(); };
+  if (extent() > hi - lo) {
+    const double size = std::floor(2 * t.font.size * (hi - lo) / extent()) / 2;
+    if (size < kMinTextSize) return false;
+    t.font.size = size;
+    t = placed(t.what, t.text, t.at, t.font, t.anchor, p, t.angle);
+    while (extent() > hi - lo && t.font.size - 0.5 >= kMinTextSize) {
+      t.font.size -= 0.5;
+      t = placed(t.what, t.text, t.at, t.font, t.anchor, p, t.angle);
+    }
+    if (extent() > hi - lo) return false;
+  }
+  const double a = along_x ? t.rect.left : t.rect.top, b = along_x ? t.rect.right : t.rect.bottom;
+  const double shift = a < lo ? lo - a : b > hi ? hi - b : 0;
+  if (shift != 0) {
+    (along_x ? t.at.x : t.at.y) += shift;
+    (along_x ? t.rect.left : t.rect.top) += shift;
+    (along_x ? t.rect.right : t.rect.bottom) += shift;
+  }
+  return true;
+}
+
+}  // namespace
+
+Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas_w, double canvas_h, const Painter& p,
+                   const Guides& g) {
   const AxesSpec& ax = prepared.axes;
   std::array<double, 2> xb{}, yb{};
   bool hx, hy;
@@ -166,23 +348,28 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
   const bool guides = ax.frame != Frame::None;
   const render::TextExtent digit = p.measure("0", g.tick_font);
   const double tick_h = digit.ascent + digit.descent;
+  auto ink_height = [&](const std::string& s, const Font& f) {
+    if (s.empty()) return 0.0;
+    const render::TextExtent e = p.measure(s, f);
+    return e.ascent + e.descent;
+  };
   // A rotated y label takes a strip at the left: its ink height and a gap.
   double ylabel_h = 0;
-  if (!ax.y.label.empty() && ax.y.label_rotated) {
-    const render::TextExtent e = p.measure(ax.y.label, g.label_font);
-    ylabel_h = e.ascent + e.descent + 8;
-  }
+  if (!ax.y.label.empty() && ax.y.label_rotated) ylabel_h = ink_height(ax.y.label, g.label_font) + 8;
+  const bool ylabel_above = !ax.y.label.empty() && !ax.y.label_rotated;
+  const double title_h = ink_height(ax.title, g.title_font), xlabel_h = ink_height(ax.x.label, g.label_font);
+  const double above_h = ylabel_above ? ink_height(ax.y.label, g.label_font) : 0;
   Panel panel;
   Rect box = cell;
   if (ax.box) {
     box = {(*ax.box)[0], (*ax.box)[1], (*ax.box)[2], (*ax.box)[3]};
   }
   // A legend outside the box on the right takes its width (and the gap) from the cell.
-  double legend_room = 0;
-  if (ax.legend == LegendPlace::OutsideRight && !ax.box) {
-    const std::vector<std::string> labels = legend_labels(ax);
-    if (!labels.empty()) legend_room = legend_size(ax, labels, p, g)[0] + kLegendOutsideGap;
-  }
+  const std::vector<std::string> legend_texts = ax.legend == LegendPlace::None ? std::vector<std::string>{} : legend_labels(ax);
+  const std::array<double, 2> legend_wh =
+      legend_texts.empty() ? std::array<double, 2>{0, 0} : legend_size(ax, legend_texts, p, g);
+  const bool legend_outside = ax.legend == LegendPlace::OutsideRight && !legend_texts.empty();
+  const double legend_room = legend_outside && !ax.box ? legend_wh[0] + kLegendOutsideGap : 0;
   std::array<double, 2> xr = xr0, yr = yr0;
   // A range from the data (or widened for equal aspect) is checked as a given one is.
   auto check_range = [](const AxisSpec& axis, char name, const std::array<double, 2>& r) {
@@ -190,28 +377,46 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
     if (!why.empty())
       throw KeyError(std::string(1, name) + "_range", why + (axis.range ? "" : " (from the data)"));
   };
+  auto thin = [&](const Rect& b) {
+    if (!guides) return;
+    panel.x_ticks = thin_ticks({ax.x, 'x', xr}, panel.x_ticks, b, p, g);
+    panel.y_ticks = thin_ticks({ax.y, 'y', yr}, panel.y_ticks, b, p, g);
+  };
   for (int pass = 0; pass < 3; ++pass) {
     xr = xr0, yr = yr0;
-    if (ax.equal_aspect) equalize(xr, yr, box.width(), box.height());
+    if (ax.equal_aspect) equalize(xr, yr, std::max(1.0, box.width()), std::max(1.0, box.height()));
     check_range(ax.x, 'x', xr);
     check_range(ax.y, 'y', yr);
     panel.x_ticks = make_ticks(ax.x, 'x', xr, box.width(), 90);
     panel.y_ticks = make_ticks(ax.y, 'y', yr, box.height(), 55);
     if (ax.box) break;
-    double ylabel_w = 0, xlabel_last = 0;
+    // Tick labels that would meet in this box are thinned before the box makes room for them.
+    thin(box);
+    double ylabel_w = 0, xlabel_last = 0, xtick_h = 0, ytick_h = 0;
     if (guides) {
-      for (const auto& t : panel.y_ticks) ylabel_w = std::max(ylabel_w, p.measure(t.label, g.tick_font).width);
+      for (const auto& t : panel.y_ticks) {
+        ylabel_w = std::max(ylabel_w, p.measure(t.label, g.tick_font).width);
+        ytick_h = std::max(ytick_h, ink_height(t.label, g.tick_font));
+      }
+      for (const auto& t : panel.x_ticks) xtick_h = std::max(xtick_h, ink_height(t.label, g.tick_font));
       if (!panel.x_ticks.empty()) xlabel_last = p.measure(panel.x_ticks.back().label, g.tick_font).width;
     }
-    const bool ylabel_above = !ax.y.label.empty() && !ax.y.label_rotated;
     double top = cell.top + (ax.title.empty() ? 0 : g.title_font.size + 12) + (ylabel_above ? g.label_font.size + 10 : 0);
     top = std::max(top, cell.top + (guides ? 0.5 * tick_h + 2 : 0));
     double bottom = cell.bottom - (guides ? g.tick_length + 4 + tick_h + 2 : 0) - (ax.x.label.empty() ? 0 : g.label_font.size + 10);
     double left = cell.left + (guides ? ylabel_w + g.tick_length + 6 : 0) + ylabel_h;
     double right = cell.right - std::max(guides ? std::max(4.0, 0.5 * xlabel_last) : 0, legend_room);
+    // The measured texts must also fit: a title, a y label above the box or the top tick
+    // label below each other, the x tick labels above the x label and inside the canvas.
+    const double below_title = cell.top + (ax.title.empty() ? 0 : title_h + kTextGap);
+    top = std::max(top, below_title + (ylabel_above ? above_h + 8 : guides ? 0.5 * ytick_h : 0));
+    if (guides && xtick_h > 0)
+      bottom = std::min(bottom, (ax.x.label.empty() ? canvas_h : cell.bottom - xlabel_h - kTextGap) - xtick_h -
+                                    g.tick_length - 4);
     box = {std::round(left), std::round(top), std::round(right), std::round(bottom)};
-    if (box.width() < 10 || box.height() < 10) box = cell;
+    if (box.width() < 1 || box.height() < 1) break;  // refused below
   }
+  if (box.width() >= 1 && box.height() >= 1) thin(box);
   panel.box = box;
   panel.x_range = xr;
   panel.y_range = yr;
@@ -226,6 +431,91 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, const Painter
   std::erase_if(panel.y_ticks, [&](const Tick& t) { return !inside(panel.map.y, t, box.top, box.bottom); });
   panel.x_minor = log_minor_ticks(ax.x, panel.x_ticks, panel.map.x);
   panel.y_minor = log_minor_ticks(ax.y, panel.y_ticks, panel.map.y);
+
+  // ---- The texts, placed where they are drawn, then checked against each other ----------
+  const Rect& b = box;
+  std::string problem;  // the first text that does not fit, and why
+  if (guides) {
+    for (const Tick& t : panel.x_ticks) panel.x_tick_labels.push_back(x_tick_text(t, tick_pixel(panel.map.x, t.value), b, p, g));
+    for (const Tick& t : panel.y_ticks) panel.y_tick_labels.push_back(y_tick_text(t, tick_pixel(panel.map.y, t.value), b, p, g));
+  }
+  auto fit = [&](PlacedText t, double lo, double hi, bool along_x, const char* room) {
+    if (!fit_text(t, lo, hi, along_x, p) && problem.empty())
+      problem = "its " + t.what + " needs " + px(along_x ? t.rect.width() : t.rect.height()) + " px " + room + ", the " +
+                (along_x ? "cell has " : "space beside the box has ") + px(hi - lo);
+    panel.labels.push_back(std::move(t));
+    return panel.labels.back().rect;
+  };
+  std::optional<Rect> title_rect, xlabel_rect;
+  if (!ax.title.empty())
+    title_rect = fit(placed("title", ax.title, {0.5 * (b.left + b.right), cell.top}, g.title_font,
+                            {render::HAlign::Center, render::VAlign::Top}, p),
+                     cell.left, cell.right, true, "across");
+  if (!ax.x.label.empty())
+    xlabel_rect = fit(placed("x label", ax.x.label, {0.5 * (b.left + b.right), cell.bottom}, g.label_font,
+                             {render::HAlign::Center, render::VAlign::Bottom}, p),
+                      cell.left, cell.right, true, "across");
+  if (ylabel_above) {
+    fit(placed("y label", ax.y.label, {std::max(cell.left, b.left - 30), b.top - 8}, g.label_font,
+               {render::HAlign::Left, render::VAlign::Bottom}, p),
+        cell.left, cell.right, true, "across");
+  } else if (!ax.y.label.empty()) {
+    // Turned a quarter to read upwards, centred on the box, its ink starting at the cell's
+    // left edge (the layout keeps that strip free); kept clear of the title, the x label and
+    // the x tick labels where they reach over that strip.
+    PlacedText t = placed("y label", ax.y.label, {cell.left, 0.5 * (b.top + b.bottom)}, g.label_font,
+                          {render::HAlign::Center, render::VAlign::Top}, p, 90);
+    double lo = cell.top, hi = cell.bottom;
+    auto reaches = [&](const Rect& r) { return r.left < t.rect.right + kTextGap && r.right > t.rect.left - kTextGap; };
+    if (title_rect && reaches(*title_rect)) lo = std::max(lo, title_rect->bottom + kTextGap);
+    if (xlabel_rect && reaches(*xlabel_rect)) hi = std::min(hi, xlabel_rect->top - kTextGap);
+    for (const PlacedText& x : panel.x_tick_labels)
+      if (!x.text.empty() && reaches(x.rect)) hi = std::min(hi, x.rect.top - kTextGap);
+    fit(std::move(t), lo, hi, false, "high");
+  }
+  if (legend_outside)
+    panel.legend = Rect{b.right + kLegendOutsideGap, b.top, b.right + kLegendOutsideGap + legend_wh[0], b.top + legend_wh[1]};
+
+  // ---- The checks: a big enough box, every text inside the canvas and apart ----------------
+  double need_w = kMinPlotBox, need_h = kMinPlotBox;
+  std::string need_why;
+  auto need = [&](double w, double h, const std::string& why) {
+    if (w > need_w || h > need_h) need_why = why;
+    need_w = std::max(need_w, w), need_h = std::max(need_h, h);
+  };
+  if (guides) {
+    const AxisSide xs{ax.x, 'x', xr}, ys{ax.y, 'y', yr};
+    need(tick_length_needed(xs, panel.x_ticks, p, g), 0, "for its x tick labels");
+    need(0, tick_length_needed(ys, panel.y_ticks, p, g), "for its y tick labels");
+    if (problem.empty() && tick_labels_meet(xs, panel.x_ticks, b, p, g)) problem = "its x tick labels would meet";
+    if (problem.empty() && tick_labels_meet(ys, panel.y_ticks, b, p, g)) problem = "its y tick labels would meet";
+  }
+  if (!legend_texts.empty() && !legend_outside)
+    need(legend_wh[0] + kLegendInset, legend_wh[1] + kLegendInset, "for its legend");
+  const bool small = box.width() < need_w || box.height() < need_h;
+  if (!small && problem.empty()) {
+    std::vector<std::pair<std::string, Rect>> all;
+    for (const auto* v : {&panel.x_tick_labels, &panel.y_tick_labels, &panel.labels})
+      for (const PlacedText& t : *v)
+        if (!t.text.empty()) all.emplace_back(t.what, t.rect);
+    if (panel.legend) all.emplace_back("legend", *panel.legend);
+    const Rect canvas{0, 0, canvas_w, canvas_h};
+    for (size_t i = 0; i < all.size() && problem.empty(); ++i) {
+      const Rect& r = all[i].second;
+      if (r.left < canvas.left || r.top < canvas.top || r.right > canvas.right || r.bottom > canvas.bottom)
+        problem = "its " + all[i].first + " would leave the canvas";
+      for (size_t j = i + 1; j < all.size() && problem.empty(); ++j)
+        if (rects_meet(r, all[j].second)) problem = "its " + all[i].first + " would meet its " + all[j].first;
+    }
+  }
+  if (small || !problem.empty()) {
+    std::string msg = "the canvas " + px(canvas_w) + "x" + px(canvas_h) + " leaves a plot box of " + px(box.width()) +
+                      " x " + px(box.height()) + " px after its labels; it needs at least " + px(need_w) + " x " +
+                      px(need_h) + " px";
+    if (small) msg += need_why.empty() ? "" : " " + need_why;
+    else msg += ", and room: " + problem;
+    throw std::runtime_error(msg);
+  }
   return panel;
 }
 

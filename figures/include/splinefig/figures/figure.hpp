@@ -23,12 +23,23 @@ struct SeriesInfo {
   bool piece = false;  // a labelled piece of a kernel drawn in several colours
 };
 
+// A text the layout placed (or a legend, as one box): what it is and the rectangle it covers
+// (left, top, right, bottom in output pixels: its advance width, its ink's height).
+struct TextBox {
+  std::string what;  // "title", "x label", "y label", "x tick label", "y tick label", "legend", "text"
+  std::array<double, 4> box{};
+};
+
 struct AxesInfo {
   std::array<double, 4> pixel_box{};  // left, top, right, bottom in output pixels
   std::array<double, 2> x_range{}, y_range{};
   Scale x_scale = Scale::Linear, y_scale = Scale::Linear;
   std::vector<SeriesInfo> series;
   std::vector<double> x_ticks, y_ticks;
+  // Every text box of the panel: the guides' texts, the legend, the elements' texts (inline
+  // labels, [[axes.text]], annotations); the layout keeps the guides' and the legend apart
+  // and inside the canvas.
+  std::vector<TextBox> text_boxes;
 
   AxisMap x_map() const;  // data -> output pixels, as docs/conventions.md states
   AxisMap y_map() const;
