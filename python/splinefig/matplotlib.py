@@ -73,6 +73,27 @@ class _unhinted:
         return False
 
 
+def _snaps(path: Path, snap) -> bool:
+    """Whether AGG's path snapper moves this path's vertices to the pixel grid: always for
+    snap=True, never for False, and for None only a path of at most 1024 vertices made of
+    horizontal and vertical lines."""
+    if snap is not None:
+        return bool(snap)
+    v, codes = path.vertices, path.codes
+    if len(v) == 0 or len(v) > 1024:
+        return False
+    if codes is None:
+        codes = np.full(len(v), Path.LINETO, np.uint8)
+        codes[0] = Path.MOVETO
+    for i in range(1, len(v)):
+        c = codes[i]
+        if c in (Path.CURVE3, Path.CURVE4):
+            return False
+        if c == Path.LINETO and abs(v[i][0] - v[i - 1][0]) >= 1e-4 and abs(v[i][1] - v[i - 1][1]) >= 1e-4:
+            return False
+    return True
+
+
 class _Target:
     """Where items go: the figure's scene, or a clip layer (a scene over an integer rectangle of
     the canvas, composited into the figure's scene when it is closed)."""
@@ -301,8 +322,8 @@ class RendererSplinefig(RendererBase):
         self._composite(t, layer, mask)
 
     def draw_markers(self, gc, marker_path, marker_trans, path, trans, rgbFace=None):
-        """One outline, prepared once, drawn at each vertex of path (at whole pixels, as AGG
-        places markers); each marker is its own item, so overlapping markers blend."""
+        """One outline, prepared once, drawn at each vertex of path (at the nearest whole pixel,
+        as AGG places markers); each marker is its own item, so overlapping markers blend."""
         t = self._target(gc)
         if t is None:
             return
@@ -317,6 +338,10 @@ class RendererSplinefig(RendererBase):
             return
         codes = self._codes(mp)
         mv = mp.vertices
+        if not _snaps(mp, gc.get_snap()):
+            # As AGG: a marker that is not snapped has its origin at a pixel centre, so that
+            # circles look centred on their point.
+            mv = mv + 0.5
         pts = path.cleaned(trans + self._flip(), remove_nans=True, curves=True)
         verts = pts.vertices
         if pts.codes is not None:
@@ -340,11 +365,30 @@ class RendererSplinefig(RendererBase):
         ext = mp.get_extents()
         margin = (stroke["width"] * 4 if stroke is not None else 0) + 2
         W, H = self.width, self.height
-        offs = np.floor(verts)
+        # AGG moves the positions by half a pixel and truncates: each marker goes to the nearest
+        # whole pixel.
+        offs = np.floor(verts + 0.5)
         vis = ((offs[:, 0] + ext.x1 + margin >= 0) & (offs[:, 0] + ext.x0 - margin <= W)
                & (offs[:, 1] + ext.y1 + margin >= 0) & (offs[:, 1] + ext.y0 - margin <= H))
         offs = offs[vis] - (t.x0, t.y0)
         core = t.core
+        if len(offs) > 1 and t.clip_path is None:
+            # Every marker sits at a whole-pixel offset of the same outline, so each covers its
+            # pixels exactly as the first does: the marker is rasterized once (its stroke over its
+            # fill over nothing, which over is associative with) and that picture is composited
+            # at each place, as AGG blits its marker's scanlines.
+            x0 = int(math.floor(ext.x0 - margin))
+            y0 = int(math.floor(ext.y0 - margin))
+            w = int(math.ceil(ext.x1 + margin)) - x0
+            h = int(math.ceil(ext.y1 + margin)) - y0
+            stamp = _Target(Scene(w, h, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend))
+            self._emit(stamp, Path(mv - (x0, y0), mp.codes), fill, stroke)
+            im = stamp.core.render(1)
+            if self.blend == "srgb":
+                im = _core.srgb_to_linear_rgba(np.ascontiguousarray(im, dtype=np.float32))
+            core.images(np.ascontiguousarray(im, dtype=np.float32), np.ascontiguousarray(offs + (x0, y0), dtype=np.float64))
+            t.items += len(offs)
+            return
         for ox, oy in offs:
             v = mv + (ox, oy)
             if fill is not None:

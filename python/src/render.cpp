@@ -199,6 +199,16 @@ void bind_render(py::module_& m) {
                                                                               {"bilinear", render::Scene::Sampling::Bilinear}});
         s.image(rgba_image(rgba), {x0, y0}, {x1, y1}, smp);
       })
+      // One picture placed at many places, each its own item at its own size (nearest
+      // sampling): its pixels are held once, however many times it is drawn.
+      .def("images", [](render::Scene& s, const py::array& rgba, const f64array& origins) {
+        if (origins.ndim() != 2 || origins.shape(1) != 2) throw py::value_error("origins: expected an (n, 2) array");
+        const auto im = rgba_image(rgba);
+        const double w = im->width, h = im->height;
+        const double* o = origins.data();
+        for (py::ssize_t i = 0; i < origins.shape(0); ++i, o += 2)
+          s.image(im, {o[0], o[1]}, {o[0] + w, o[1] + h}, render::Scene::Sampling::Nearest);
+      })
       .def_property_readonly("height", &render::Scene::height)
       .def("polyline", [](render::Scene& s, const f64array& pts, bool closed, const std::array<float, 4>& color, double width,
                           const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes,

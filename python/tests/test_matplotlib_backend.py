@@ -42,6 +42,16 @@ def scatter():
     return fig
 
 
+def markers():
+    # One colour and size: matplotlib draws these through draw_markers, at whole pixels.
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    rng = np.random.default_rng(2)
+    ax.scatter(rng.uniform(size=1500), rng.uniform(size=1500), s=20)
+    ax.plot(rng.uniform(size=40), rng.uniform(size=40), "s", ms=6, mfc="C1", mec="k", mew=1.5, alpha=0.7)
+    ax.plot(np.linspace(0, 1, 30), rng.uniform(size=30), "D--", ms=5)
+    return fig
+
+
 def fill_between():
     fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
     x = np.linspace(0, 10, 500)
@@ -90,16 +100,17 @@ def gouraud():
 # (figure, largest mean |difference| in 8-bit levels over all pixels and channels, how far from
 # an edge of AGG's picture a large difference may be: 3 px for text, whose hinted metrics move
 # AGG's mathtext rules and glyphs by up to that much)
-FIGURES = [(line_plot, 1.0, 2), (scatter, 0.7, 2), (fill_between, 1.0, 2), (imshow, 0.7, 2),
+FIGURES = [(line_plot, 1.0, 2), (scatter, 0.7, 2), (markers, 1.0, 2), (fill_between, 1.0, 2), (imshow, 0.7, 2),
            (text_and_mathtext, 2.5, 3), (clipped_path, 0.7, 2),
            (gouraud, 1.0, 2)]
 
 
 def edges(img, radius=2):
-    """Pixels within `radius` of a place where AGG's picture changes (an edge of anything)."""
-    grey = img[:, :, :3].max(axis=2)
+    """Pixels within `radius` of a place where AGG's picture changes in any channel (an edge of
+    anything, also of an orange mark on white, whose red channel does not change)."""
     size = 3
-    local = ndimage.maximum_filter(grey, size) - ndimage.minimum_filter(grey, size)
+    local = np.max([ndimage.maximum_filter(img[:, :, c], size) - ndimage.minimum_filter(img[:, :, c], size)
+                    for c in range(3)], axis=0)
     return ndimage.binary_dilation(local > 8, iterations=radius)
 
 
@@ -118,6 +129,27 @@ def test_agrees_with_agg(make, mean_limit, radius):
     # Every large difference is at an edge of AGG's picture, where its coverage (or its hinted
     # glyph) is approximate; the flat areas agree.
     assert away.sum() == 0, np.argwhere(away)[:10]
+
+
+@pytest.mark.parametrize("marker", ["o", "h", "s", "^", "+"])
+@pytest.mark.parametrize("frac", [0.2, 0.5, 0.7])
+def test_markers_go_where_agg_puts_them(marker, frac):
+    """A marker at a position with fractional part `frac` has its ink centred where AGG centres
+    it: AGG rounds the position to the nearest pixel and, for a marker it does not snap to the
+    grid (circles, hexagons), puts the marker's origin at that pixel's centre."""
+    centres = {}
+    for backend in (None, BACKEND):
+        fig = plt.figure(figsize=(1, 1), dpi=100)
+        ax = fig.add_axes([0, 0, 1, 1])
+        ax.set_xlim(0, 100)
+        ax.set_ylim(0, 100)
+        ax.axis("off")
+        ax.plot([50 + frac], [50 + frac], marker, ms=10, mew=1, color="k")
+        ink = 255.0 - png(fig, backend)[:, :, 0]
+        plt.close(fig)
+        ys, xs = np.indices(ink.shape)
+        centres[backend] = ((ink * xs).sum() / ink.sum(), (ink * ys).sum() / ink.sum())
+    assert np.allclose(centres[BACKEND], centres[None], atol=0.05), centres
 
 
 def test_exact_rectangle_by_hand():
