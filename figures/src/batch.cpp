@@ -11,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -31,7 +32,15 @@ double thread_cpu_ms() {
   return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
 }
 
-BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_threads) {
+// The bytes a figure of `pixels` holds while it is rendered and written, for the batch's memory
+// budget: its float RGBA canvas (16 a pixel) and, for a raster file, the file's integer pixels
+// and encoded bytes (at most 8 a pixel together); a vector file holds the scene only.
+std::uint64_t figure_bytes(double pixels, const BatchOptions& o) {
+  const bool raster = std::any_of(o.formats.begin(), o.formats.end(), [](Format f) { return f == Format::png || f == Format::exr; });
+  return static_cast<std::uint64_t>(pixels * (raster ? 24 : 4));
+}
+
+BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_threads, MemoryBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   const double c0 = thread_cpu_ms();
   BatchResult result;
@@ -47,6 +56,9 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
       canvas = buf;
     }
     check_scaled_canvas(spec, o.scale, "--scale");
+    // Waits until the figure's bytes fit beside those of the figures under way.
+    const MemoryBudget::Grant grant = budget.acquire(
+        figure_bytes(std::round(spec.canvas.width * o.scale) * std::round(spec.canvas.height * o.scale), o));
     FigureScene fig = figure_scene(spec, o.scale);
     FigureFileOptions w;
     w.scale = o.scale;
@@ -64,7 +76,7 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     result.info = std::move(fig.info);
   } catch (const std::bad_alloc&) {
     // One line naming the figure and its size, not a bare "std::bad_alloc".
-    result.error = s.path + ": out of memory rendering the figure" + (canvas.empty() ? "" : " (" + canvas + ")");
+    result.error = s.path + (canvas.empty() ? ": out of memory reading the spec" : ": out of memory rendering the figure (" + canvas + ")");
   } catch (const std::exception& e) {
     result.error = e.what();
   }
@@ -161,7 +173,11 @@ std::string output_over_input(const std::vector<std::string>& outputs, const std
 
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
                   const std::function<void(BatchResult&)>& done) {
-  const int workers = static_cast<int>(std::min<std::size_t>(specs.size(), static_cast<std::size_t>(worker_count(options.threads))));
+  // Figures at once: at most one per core (more would add canvases in memory, not speed), and
+  // only as many as the memory budget holds (render_one waits for it). With one worker the
+  // rasterizer gets the threads instead.
+  const int workers = static_cast<int>(std::min<std::size_t>(
+      {specs.size(), static_cast<std::size_t>(worker_count(options.threads)), static_cast<std::size_t>(worker_count(0))}));
   const int raster_threads = workers > 1 ? 1 : options.threads;
   // No output may replace a file a spec reads (its image and data files, the specs themselves),
   // nor index.json and index.html: all refused before anything is rendered or written.
@@ -179,13 +195,19 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
   // The image I/O module first, if the batch may use it: a library it loads starts threads of its
   // own when loaded, and under a thread limit those must not find the budget taken by the workers.
   if (needs_image_io(specs, options)) preload_image_io();
+  // The canvases held at once: three quarters of the memory left to the process
+  // (memory_available), less each worker's thread stack and malloc arena (8 and 64 MiB of
+  // address space).
+  const std::uint64_t available = memory_available(), per_worker = std::uint64_t(72) << 20;
+  const std::uint64_t reserved = per_worker * static_cast<std::uint64_t>(workers);
+  MemoryBudget budget(available > reserved ? (available - reserved) / 4 * 3 : 0);
   // Each result is kept until those before it are in; then the thread that completed it hands
   // it and every following one that is ready to `done`, in spec order, under the lock.
   std::vector<std::optional<BatchResult>> results(specs.size());
   std::mutex mutex;
   std::size_t handed = 0;  // results[0, handed) went to done
   parallel_for(specs.size(), workers, [&](std::size_t i, int) {
-    BatchResult r = render_one(specs[i], options, raster_threads);
+    BatchResult r = render_one(specs[i], options, raster_threads, budget);
     std::lock_guard<std::mutex> lock(mutex);
     results[i] = std::move(r);
     for (; handed < results.size() && results[handed]; ++handed) {

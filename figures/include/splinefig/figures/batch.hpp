@@ -32,7 +32,10 @@ struct BatchResult {
 
 // Loads, renders and writes every spec. Figures render in parallel, one per worker: a
 // figure's serial parts (text, PNG encoding) dominate, so this beats splitting one figure
-// across threads; with one worker the rasterizer gets the threads instead. The images do not
+// across threads; with one worker the rasterizer gets the threads instead. There are at most
+// as many workers as cores, and a worker starts a figure only when its canvas fits beside
+// those under way in a memory budget (three quarters of memory_available(), parallel.hpp), so
+// the memory held does not grow with `threads`; a figure larger than the budget runs alone. The images do not
 // depend on the thread count. `done` is called once per spec, in spec order, one call at a time
 // (from whichever thread completed the result, with the batch's lock held: keep it short), as
 // soon as the results before it are in. If `done` throws, no further figure is started and the
