@@ -1,5 +1,6 @@
 // splinefig/testing.hpp: MatchesReference in update mode, on a match, and on a mismatch (with
-// the actual, diff and triptych images written to the results directory).
+// the actual, expected, diff and triptych images written to the results directory, and the
+// alpha diff only when alpha differs).
 #include "support.hpp"
 
 #include <splinefig/image/srgb.hpp>
@@ -96,15 +97,24 @@ TEST_CASE("MatchesReference: a mismatch writes actual, diff and triptych and rep
   auto m = MatchesReference(ref, {.fail = 0.01f});
   CHECK_FALSE(m.match(linear_rgba(24, 20, other.data())));
   const std::string msg = m.describe();
+  INFO(msg);
+  // What Catch2 prints after the image: that it does not match, and by how much.
+  CHECK(msg.rfind(std::string("does not match reference ") + ref + ": max error ", 0) == 0);
   CHECK(msg.find("  Mean error = ") != std::string::npos);
   CHECK(msg.find("FAILURE") != std::string::npos);
-  for (const char* label : {"actual:", "diff:", "alpha:", "triptych:"}) {
+  for (const char* label : {"actual:", "expected:", "diff:", "triptych:"}) {
     INFO(label << " in " << msg);
     const std::string path = artefact(msg, label);
     CHECK(fs::path(path).is_absolute());
     CHECK(path.rfind(results + "/", 0) == 0);
     CHECK(fs::exists(path));
   }
+  // The two discs have the same coverage: no alpha difference to show, so no alpha-diff.png.
+  CHECK(msg.find("  alpha:    the same in both") != std::string::npos);
+  const std::string actual = artefact(msg, "actual:");
+  REQUIRE(actual.ends_with(".actual.png"));
+  CHECK(fs::exists(actual));
+  CHECK_FALSE(fs::exists(actual.substr(0, actual.size() - 11) + ".alpha-diff.png"));
   const Image trip = read_image(artefact(msg, "triptych:"));
   CHECK(trip.width == 3 * 24 + 4);
   // Within a generous tolerance the same pair matches.
@@ -209,8 +219,10 @@ TEST_CASE("MatchesReference: the diff image of an RGBA render shows the colour d
   CHECK(diff.at(12, 10, 0) == Approx(1.0).margin(1e-6));
   CHECK(diff.at(12, 10, 1) == 0.0f);
   CHECK(diff.at(0, 0, 0) == 0.0f);  // transparent in both
-  const Image alpha = read_image(artefact(m.describe(), "alpha:"));
-  float most = 0.0f;
-  for (float v : alpha.pixels) most = std::max(most, v);
-  CHECK(most == 0.0f);  // same coverage
+  // Same coverage: no alpha-diff.png (it would be all 0), and the message says why.
+  const std::string diff_file = artefact(m.describe(), "diff:");
+  REQUIRE(diff_file.ends_with(".diff.png"));
+  const std::string stem = diff_file.substr(0, diff_file.size() - 9);
+  CHECK_FALSE(fs::exists(stem + ".alpha-diff.png"));
+  CHECK(m.describe().find("  alpha:    the same in both") != std::string::npos);
 }

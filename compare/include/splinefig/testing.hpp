@@ -11,14 +11,18 @@
 // against a PNG reference is first stored as the 8-bit sRGB PNG splinefig would write and read
 // back, so the test compares what the file would hold; against an EXR it is compared as is.
 //
-// On failure the matcher writes <stem>.actual.<ext>, <stem>.diff.png (|a-b| scaled so the
-// largest difference is 1; for RGBA the colour channels, and <stem>.alpha-diff.png the alpha
-// channel) and <stem>.triptych.png (expected | actual | heat map), where <stem> is
-// <results>/<test name>/<reference path without extension>, <results> being
-// $SPLINEFIG_TEST_RESULTS or else test-results/ in the test's build directory (absolute). Its
-// message gives their paths and the numbers. With SPLINEFIG_UPDATE_REFERENCES=1 it writes the
-// image as the new reference instead, says so, and passes: review the change (git diff, the
-// images) before committing.
+// On failure the matcher writes <stem>.actual.<ext>, <stem>.expected.<ext> (a copy of the
+// reference), <stem>.diff.png (|a-b| scaled so the largest difference is 1; for RGBA the colour
+// channels), <stem>.alpha-diff.png (the alpha channel's, only when alpha differs) and
+// <stem>.triptych.png (expected | actual | heat map), replacing what an earlier failure left
+// there. <stem> is <results>/<test name>/<key>: <results> is $SPLINEFIG_TEST_RESULTS or else
+// test-results/ in the test's build directory (absolute); <key> is the reference's path
+// relative to $SPLINEFIG_REFERENCE_ROOT (or SPLINEFIG_REFERENCE_ROOT_DIR) without its extension
+// when it lies inside, else the reference's file stem: never the current directory's. The
+// message begins "does not match reference <absolute path>: max error E at pixel (x, y) channel
+// C, N of M pixels (P%) over fail F", then idiff's report and the files' absolute paths. With
+// SPLINEFIG_UPDATE_REFERENCES=1 it writes the image as the new reference instead, says so, and
+// passes: review the change (git diff, the images) before committing.
 //
 // Header-only on purpose: only test code includes it, and it needs Catch2's headers (the
 // splinefig::testing CMake target brings them and splinefig::compare). The same matcher for
