@@ -14,6 +14,7 @@ environment variable SPLINEFIG_MPL_BLEND) blends in linear light instead. See do
 """
 from __future__ import annotations
 
+import functools
 import math
 import os
 from typing import Any, Optional
@@ -41,11 +42,18 @@ _HATCH_SIZE = 72  # points: matplotlib's hatch tile is one inch square, as in AG
 
 def _linear(rgba) -> tuple:
     """matplotlib's sRGB floats (straight alpha) -> the linear-light floats Scene takes."""
-    c = np.asarray(rgba, dtype=np.float64).ravel()
-    rgb = np.clip(c[:3], 0.0, 1.0)
-    lin = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
-    a = float(c[3]) if c.size > 3 else 1.0
-    return (float(lin[0]), float(lin[1]), float(lin[2]), min(max(a, 0.0), 1.0))
+    c = tuple(float(v) for v in np.asarray(rgba, dtype=np.float64).ravel()[:4])
+    return _linear_of(c)
+
+
+@functools.lru_cache(maxsize=4096)
+def _linear_of(c: tuple) -> tuple:
+    # A collection draws the same few colours thousands of times: each is converted once.
+    def lin(v):
+        v = min(max(v, 0.0), 1.0)
+        return v / 12.92 if v <= 0.04045 else ((v + 0.055) / 1.055) ** 2.4
+    a = c[3] if len(c) > 3 else 1.0
+    return (lin(c[0]), lin(c[1]), lin(c[2]), min(max(a, 0.0), 1.0))
 
 
 def _blend_of(value: Optional[str]) -> str:
