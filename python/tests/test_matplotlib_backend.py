@@ -299,3 +299,58 @@ def test_clip_path_is_exact():
             want = _area(part) if len(part) >= 3 else 0.0
             worst = max(worst, abs(im[row, col, 3] / 255 - want))
     assert worst <= 0.5 / 255 + 1e-9
+
+
+PYTEST_MPL_TEST = '''
+import matplotlib.pyplot as plt
+import pytest
+
+
+@pytest.mark.mpl_image_compare(backend="module://splinefig.matplotlib", tolerance=0)
+def test_plot():
+    fig, ax = plt.subplots(figsize=(3, 2), dpi=100)
+    ax.plot([1, 3, 2], color="COLOUR", label="data")
+    ax.set_title(r"$\\alpha^2$ text")
+    ax.legend()
+    return fig
+'''
+
+
+def test_pytest_mpl_workflow(tmp_path):
+    """docs/matplotlib.md's pytest-mpl workflow, run as a project would: the baseline is written
+    through the backend once, a run compares with it at tolerance 0 and passes (so the backend
+    gives the same bytes on a second draw in another process), and the same test drawing a
+    different colour fails."""
+    pytest.importorskip("pytest_mpl")
+    import os
+    import subprocess
+    import sys
+
+    env = dict(os.environ, MPLBACKEND="Agg")
+
+    def run(colour, *args):
+        (tmp_path / "test_plot.py").write_text(PYTEST_MPL_TEST.replace("COLOUR", colour))
+        return subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", *args, "test_plot.py"],
+                              cwd=tmp_path, env=env, capture_output=True, text=True, timeout=300)
+
+    r = run("C0", "--mpl-generate-path=baseline")
+    assert r.returncode == 0, r.stdout + r.stderr
+    baseline = tmp_path / "baseline" / "test_plot.png"
+    assert baseline.is_file()
+    ours = np.asarray(Image.open(baseline).convert("RGBA"))
+    assert ours.shape[:2] == (200, 300)
+    assert len(np.unique(ours.reshape(-1, 4), axis=0)) > 10  # a drawn figure, not a blank one
+    # The baseline is the backend's picture (drawn here again, in this process, in the style
+    # pytest-mpl applies by default), not AGG's.
+    with plt.style.context("classic"):
+        fig, ax = plt.subplots(figsize=(3, 2), dpi=100)
+        ax.plot([1, 3, 2], color="C0", label="data")
+        ax.set_title(r"$\alpha^2$ text")
+        ax.legend()
+        assert np.array_equal(png(fig, BACKEND), ours.astype(np.int32))
+        assert not np.array_equal(png(fig), ours.astype(np.int32))
+        plt.close(fig)
+    r = run("C0", "--mpl", "--mpl-baseline-path=baseline")
+    assert r.returncode == 0, r.stdout + r.stderr
+    r = run("C3", "--mpl", "--mpl-baseline-path=baseline")
+    assert r.returncode != 0 and "Error: Image files did not match" in r.stdout, r.stdout + r.stderr
