@@ -184,25 +184,29 @@ const splinefig::cli::Registration reg{
           ->type_name("SPEC")
           ->required();
       app.add_option("--grain", o->grain, "Points per piece")->type_name("INT")->capture_default_str();
-      app.add_option("--ends", o->ends,
-                     "open (the memo's: n knots give (n-3)*grain+1 points), double (first and last knot "
-                     "doubled), closed (cyclic: n*grain+1 points, last = first)")
-          ->type_name("NAME")
-          ->capture_default_str();
-      app.add_option("--derivative", o->derivative, "0: X(t), 1: dX/dt, 2: d2X/dt2")
-          ->type_name("INT")
-          ->capture_default_str();
-      app.add_option("--spacing", o->spacing,
-                     "parameter (grain points per piece), arclength (--count points evenly "
-                     "spaced along the curve), polygon (the same by the memo's polyline method)")
-          ->type_name("NAME")
-          ->capture_default_str();
+      cli::choices(app.add_option("--ends", o->ends,
+                                  "open (the memo's: n knots give (n-3)*grain+1 points), double (first and last knot "
+                                  "doubled), closed (cyclic: n*grain+1 points, last = first)")
+                       ->type_name("NAME")
+                       ->capture_default_str(),
+                   {"open", "double", "closed"});
+      cli::choices(app.add_option("--derivative", o->derivative, "0: X(t), 1: dX/dt, 2: d2X/dt2")
+                       ->type_name("INT")
+                       ->capture_default_str(),
+                   {"0", "1", "2"});
+      cli::choices(app.add_option("--spacing", o->spacing,
+                                  "parameter (grain points per piece), arclength (--count points evenly "
+                                  "spaced along the curve), polygon (the same by the memo's polyline method)")
+                       ->type_name("NAME")
+                       ->capture_default_str(),
+                   {"parameter", "arclength", "polygon"});
       app.add_option("--count", o->count, "Number of points for --spacing arclength|polygon (>= 2)")->type_name("INT");
-      app.add_option("--knot-spacing", o->knot_spacing,
-                     "catmull-rom only: uniform, chordal or centripetal knot parameters; "
-                     "--derivative is then d/dtau of the spaced parameter")
-          ->type_name("NAME")
-          ->capture_default_str();
+      cli::choices(app.add_option("--knot-spacing", o->knot_spacing,
+                                  "catmull-rom only: uniform, chordal or centripetal knot parameters; "
+                                  "--derivative is then d/dtau of the spaced parameter")
+                       ->type_name("NAME")
+                       ->capture_default_str(),
+                   {"uniform", "chordal", "centripetal"});
       app.add_option("--betas", o->betas,
                      "beta only: CSV file of b1,b2 per knot (bias, tension), blended along each piece "
                      "(continuously shaped Beta-spline, G2)")

@@ -156,7 +156,8 @@ const splinefig::cli::Registration reg{
       app.add_option("--out", a->out, "Output directory")->type_name("PATH")->capture_default_str();
       app.add_option("--only", a->only, "Only these figures (names as in figures/specs; repeat or comma-separate)")->type_name("NAME")
           ->delimiter(',');
-      app.add_option("--format", a->format, "Comma-separated: png, exr, svg, pdf")->type_name("NAME,...")->capture_default_str();
+      splinefig::cli::choices(app.add_option("--format", a->format, "Comma-separated: png, exr, svg, pdf")->type_name("NAME,...")->capture_default_str(),
+                              {"png", "exr", "svg", "pdf"});
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (2 for print)")->capture_default_str();
       app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the files (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
           ->type_name("FLOAT")->capture_default_str();

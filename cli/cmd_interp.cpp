@@ -123,18 +123,20 @@ int run(const Options& o) {
 Runner setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
   add_input(app, o->input, o->delimiter, "Data points S_0..S_n");
-  app.add_option("--ends", o->ends, "relaxed (P''=0 at the ends), clamped (given end velocities) or periodic")
-      ->type_name("NAME")
-      ->capture_default_str();
+  choices(app.add_option("--ends", o->ends, "relaxed (P''=0 at the ends), clamped (given end velocities) or periodic")
+              ->type_name("NAME")
+              ->capture_default_str(),
+          {"relaxed", "clamped", "periodic"});
   app.add_option("--start-velocity", o->start_velocity, "clamped: P'(0) as comma-separated coordinates (0 when not given)")
       ->type_name("FLOAT,...");
   app.add_option("--end-velocity", o->end_velocity, "clamped: P'(n) as comma-separated coordinates (0 when not given)")
       ->type_name("FLOAT,...");
   app.add_option("--grain", o->grain, "points per piece for --output curve (>= 1)")->type_name("INT")->capture_default_str();
-  app.add_option("--output", o->output,
-                 "curve (P(t) at t = 0, 1/grain, ..., n), bspline (B_0..B_n) or bezier (4 points per piece per line)")
-      ->type_name("NAME")
-      ->capture_default_str();
+  choices(app.add_option("--output", o->output,
+                         "curve (P(t) at t = 0, 1/grain, ..., n), bspline (B_0..B_n) or bezier (4 points per piece per line)")
+              ->type_name("NAME")
+              ->capture_default_str(),
+          {"curve", "bspline", "bezier"});
   app.footer(
       "Reads data points S_0..S_n (one per line, any dimension; see --delimiter) and fits the "
       "cubic spline P(t), t in [0, n], with P(i) = S_i through the B-spline 1-4-1 system. relaxed and "

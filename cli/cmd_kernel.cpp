@@ -123,9 +123,10 @@ const splinefig::cli::Registration reg{
                      "Values to evaluate at instead of --from/--to/--step: a CSV file of one x (or f) "
                      "per line, or - for stdin; a first line of names is skipped")
           ->type_name("PATH");
-      app.add_option("--delimiter", o->delimiter, "Input delimiter: comma, semicolon, tab or space")
-          ->type_name("NAME")
-          ->capture_default_str();
+      splinefig::cli::choices(app.add_option("--delimiter", o->delimiter, "Input delimiter: comma, semicolon, tab or space")
+                                  ->type_name("NAME")
+                                  ->capture_default_str(),
+                              {"comma", "semicolon", "tab", "space"});
       app.add_option("--basis", o->basis,
                      "Basis spec NAME[:key=value,...] (see splinefig eval --help), or box, tent, lanczos3")
           ->type_name("SPEC")

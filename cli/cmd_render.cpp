@@ -30,8 +30,10 @@ const splinefig::cli::Registration reg{
       app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md); - reads it from stdin, its relative paths then from the current directory")->type_name("PATH")->required();
       app.add_option("-o,--output", a->out, "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves); - writes to stdout")
           ->type_name("PATH")->required();
-      app.add_option("--format", a->format, "Output format png, exr, svg or pdf, for -o - (png when not given) or a name without one of those extensions")
-          ->type_name("NAME");
+      splinefig::cli::choices(
+          app.add_option("--format", a->format, "Output format png, exr, svg or pdf, for -o - (png when not given) or a name without one of those extensions")
+              ->type_name("NAME"),
+          {"png", "exr", "svg", "pdf"});
       app.add_option("--scale", a->scale, "Output pixels per spec pixel")->capture_default_str();
       app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
           ->type_name("FLOAT")->capture_default_str();

@@ -198,21 +198,25 @@ const splinefig::cli::Registration reg{
       auto o = std::make_shared<Options>();
       app.add_option("IN", o->in, "Input image (PNG, EXR, TIFF or JPEG); - reads it from stdin")->type_name("PATH")->required();
       app.add_option("-o,--output", o->out, "Output image: .png, .jpg (alpha composited over white), .tif or .exr; - writes to stdout (--format, default png)")->type_name("PATH")->required();
-      app.add_option("--format", o->format, "Output format png, jpg, tif or exr, for -o - or a name without one of those extensions")
-          ->type_name("NAME");
+      splinefig::cli::choices(
+          app.add_option("--format", o->format, "Output format png, jpg, tif or exr, for -o - or a name without one of those extensions")
+              ->type_name("NAME"),
+          {"png", "jpg", "tif", "exr"});
       app.add_option("--size", o->size, "Output size WxH; Wx or xH keeps the aspect ratio")->type_name("WxH");
       app.add_option("--scale", o->scale, "Scale factor S or SX,SY (output size rounded)")->type_name("FLOAT[,FLOAT]");
       app.add_option("--filter", o->filter,
                      std::string("Basis spec (") + splinefig::cli::basis_specs + ") or box, tent, lanczos3")
           ->type_name("SPEC")
           ->required();
-      app.add_option("--edge", o->edge, "Samples outside the image: clamp, mirror, wrap, black")
-          ->type_name("NAME")
-          ->capture_default_str();
-      app.add_option("--bits", o->bits,
-                     "Output bits: .png 8 or 16 (when not given: 16 for a 16-bit PNG input, else 8), .jpg 8, .exr float, "
-                     ".tif 8, 16 or float (when not given: as the input's)")
-          ->type_name("8|16|float");
+      splinefig::cli::choices(app.add_option("--edge", o->edge, "Samples outside the image: clamp, mirror, wrap, black")
+                                  ->type_name("NAME")
+                                  ->capture_default_str(),
+                              {"clamp", "mirror", "wrap", "black"});
+      splinefig::cli::choices(app.add_option("--bits", o->bits,
+                                             "Output bits: .png 8 or 16 (when not given: 16 for a 16-bit PNG input, else 8), .jpg 8, "
+                                             ".exr float, .tif 8, 16 or float (when not given: as the input's)")
+                                  ->type_name("8|16|float"),
+                              {"8", "16", "float"});
       app.add_flag("--interpolating", o->interpolating,
                    "Prefilter so that an approximating spline (bspline, tensioned-bspline, beta) "
                    "interpolates the samples");

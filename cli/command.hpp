@@ -4,6 +4,8 @@
 // where setup(CLI::App&) adds the options and returns the function that runs it.
 // The function returns the process exit code; it reports errors by throwing
 // splinefig::cli::Failure (one line, printed as "splinefig NAME: message").
+#include "reference.hpp"
+
 #include <splinefig/base/limits.hpp>
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/points_csv.hpp>

@@ -105,9 +105,10 @@ void add_input(CLI::App& app, std::string& input, std::string& delimiter, const 
                  what + ": a CSV file, or - (the default) for stdin; one point per line, a first line of "
                         "names is skipped if none of it is a number")
       ->type_name("PATH");
-  app.add_option("--delimiter", delimiter, "Between coordinates: comma, semicolon, tab or space (runs of blanks)")
-      ->type_name("NAME")
-      ->capture_default_str();
+  choices(app.add_option("--delimiter", delimiter, "Between coordinates: comma, semicolon, tab or space (runs of blanks)")
+              ->type_name("NAME")
+              ->capture_default_str(),
+          {"comma", "semicolon", "tab", "space"});
 }
 
 std::istringstream slurp_stdin() {

@@ -1,6 +1,7 @@
 // splinefig: the command line. Subcommands register themselves (command.hpp).
 #include "command.hpp"
 #include "parse_errors.hpp"
+#include "reference.hpp"
 
 #include <splinefig/version.hpp>
 
@@ -23,6 +24,12 @@ std::vector<Command>& registry() {
 }  // namespace splinefig::cli
 
 namespace {
+
+// A hidden option's output (the man page, a completion script), thrown when it is parsed so that
+// no command is required.
+struct Reference {
+  std::string text;
+};
 
 // `code`, once everything written to standard output has reached it; else one line on stderr
 // and `failed` (a full disk, a closed pipe or descriptor: `diff >&-` must not look like a match).
@@ -60,6 +67,22 @@ int main(int argc, char** argv) {
     command_names.push_back(c.name);
   }
   const std::string commands_list = splinefig::or_list(command_names);
+  // The man page and the completions, from the tables above (reference.hpp); the build writes
+  // them with these. Hidden: an empty group.
+  app.add_flag_callback("--help-man", [&app] { throw Reference{man_page(app, SPLINEFIG_VERSION)}; },
+                        "Print the man page (roff)")
+      ->group("")
+      ->trigger_on_parse();
+  app.add_option_function<std::string>(
+         "--completion",
+         [&app](const std::string& shell) {
+           throw Reference{shell == "bash" ? bash_completion(app) : zsh_completion(app)};
+         },
+         "Print the completion script for bash or zsh")
+      ->check(CLI::IsMember({"bash", "zsh"}))
+      ->type_name("SHELL")
+      ->group("")
+      ->trigger_on_parse();
   const auto fail = [](const std::string& who, const std::string& msg) {
     std::cerr << who << ": " << msg << "\n";
     return 2;
@@ -77,9 +100,8 @@ int main(int argc, char** argv) {
     }
   } else {
     const std::string flag = first.substr(0, first.find('='));
-    const auto own = flag_names(app);
-    if (std::find(own.begin(), own.end(), flag) == own.end()) {
-      auto near = near_flags(flag, own);
+    if (const auto all = flag_names(app, true); std::find(all.begin(), all.end(), flag) == all.end()) {
+      auto near = near_flags(flag, flag_names(app));
       const auto dashes = flag.find_first_not_of('-');
       if (near.empty() && dashes != std::string::npos) near = splinefig::near_misses(flag.substr(dashes), command_names);
       return fail("splinefig", "unknown option " + printable(flag) + " (" +
@@ -100,6 +122,9 @@ int main(int argc, char** argv) {
   };
   try {
     app.parse(argc, argv);
+  } catch (const Reference& r) {
+    std::cout << r.text;
+    return flushed(0, "splinefig");
   } catch (const CLI::CallForHelp& e) {
     return flushed(app.exit(e), "splinefig");
   } catch (const CLI::CallForAllHelp& e) {

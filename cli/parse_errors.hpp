@@ -27,10 +27,12 @@ inline std::string option_names(const CLI::Option& o) {
   return s;
 }
 
-// The flags of `app` as typed: "--scale", "-o", "--output" (and --help).
-inline std::vector<std::string> flag_names(const CLI::App& app) {
+// The flags of `app` as typed: "--scale", "-o", "--output" (and --help); `hidden`: also those
+// --help does not show (an empty group: --help-man, --completion), never suggested.
+inline std::vector<std::string> flag_names(const CLI::App& app, bool hidden = false) {
   std::vector<std::string> out;
   for (const CLI::Option* o : app.get_options()) {
+    if (!hidden && o->get_group().empty()) continue;
     for (const auto& n : o->get_lnames()) out.push_back("--" + n);
     for (const auto& n : o->get_snames()) out.push_back("-" + n);
   }
