@@ -12,10 +12,32 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 
 namespace {
+
+namespace fig = splinefig::figures;
+
+// The files a spec read from stdin names (fig::spec_inputs, on a scratch copy of its bytes),
+// resolved as render reads them, from the current directory, and placed as "stdin:LINE".
+std::vector<fig::SpecInput> stdin_spec_inputs(const std::string& text) {
+  splinefig::cli::Scratch scratch;
+  const std::string path = scratch.file("stdin.toml");
+  {
+    std::ofstream f(path, std::ios::binary);
+    if (!f.write(text.data(), static_cast<std::streamsize>(text.size())) || !f.flush())
+      throw splinefig::cli::Failure("cannot save stdin in " + path, 4);
+  }
+  std::vector<fig::SpecInput> inputs = fig::spec_inputs(path);
+  const std::string dir = std::filesystem::path(path).parent_path().string() + "/";
+  for (fig::SpecInput& in : inputs) {
+    if (in.path.rfind(dir, 0) == 0) in.path = in.path.substr(dir.size());
+    in.where = splinefig::cli::said_as(in.where, path, "stdin");
+  }
+  return inputs;
+}
 
 struct RenderArgs {
   std::string spec, out, format;
@@ -41,7 +63,6 @@ const splinefig::cli::Registration reg{
       app.footer("Example: splinefig render figures/specs/bias.toml -o bias.svg --scale 2");
       return splinefig::cli::Runner([a] {
         using splinefig::cli::Failure;
-        namespace fig = splinefig::figures;
         const bool to_stdout = splinefig::cli::is_stdio(a->out), from_stdin = splinefig::cli::is_stdio(a->spec);
         // The format: --format, else the extension, else png for stdout (one value, never an
         // optional read after the checks: GCC 12 at -O2 warns about that).
@@ -74,10 +95,15 @@ const splinefig::cli::Registration reg{
         const std::string spec_name = from_stdin ? "stdin" : a->spec;
         std::string need;  // the scaled canvas, for a message about memory (as figures says it)
         try {
-          fig::FigureSpec spec = from_stdin ? fig::parse_spec(splinefig::cli::read_stdin_bytes("the spec", splinefig::kMaxSpecBytes), "stdin", ".")
-                                            : fig::load_spec(a->spec);
+          const std::string text = from_stdin ? splinefig::cli::read_stdin_bytes("the spec", splinefig::kMaxSpecBytes) : "";
+          fig::FigureSpec spec = from_stdin ? fig::parse_spec(text, "stdin", ".") : fig::load_spec(a->spec);
+          // An output never replaces an input: the spec or a file it names.
           if (std::string bad = to_stdout || from_stdin ? "" : fig::output_over_input({a->out}, {a->spec}); !bad.empty())
             throw Failure("-o " + bad + " (write to another file)");
+          if (from_stdin && !to_stdout)
+            for (const fig::SpecInput& in : stdin_spec_inputs(text))
+              if (splinefig::same_file(a->out, in.path))
+                throw Failure("-o " + a->out + ": it is " + in.where + ", an input (write to another file)");
           {
             const double cw = std::round(spec.canvas.width * a->scale), ch = std::round(spec.canvas.height * a->scale);
             char buf[128];

@@ -103,6 +103,42 @@ TEST_CASE("stdio: render - reads the spec from stdin, its relative files from th
   fs::remove_all(dir);
 }
 
+TEST_CASE("stdio: render - -o FILE refuses a FILE the spec on stdin reads, as for a spec file") {
+  const fs::path dir = scratch("render-over-input");
+  REQUIRE(run({"render", kBias, "-o", (dir / "big.png").string()}).code == 0);
+  REQUIRE(run({"resample", (dir / "big.png").string(), "-o", (dir / "pic.png").string(), "--size", "4x4", "--filter",
+               "box"}).code == 0);
+  { std::ofstream(dir / "knots.csv") << "x,y\n0,0\n1,2\n3,1\n4,3\n"; }
+  const std::string spec =
+      "[canvas]\nwidth = 200\nheight = 150\n[[image]]\nfile = \"pic.png\"\nat = [2, 2]\n"
+      "[axes]\n[[axes.markers]]\npoints_file = \"knots.csv\"\n";
+  const std::string pic = slurp(dir / "pic.png"), csv = slurp(dir / "knots.csv");
+  const InDirectory here(dir);
+  // Each input, by the name the spec gives, by another spelling and by a hard link: refused
+  // before anything is written, the input as it was.
+  fs::create_directories(dir / "sub");
+  fs::create_hard_link(dir / "pic.png", dir / "link.png");
+  for (const std::vector<std::string>& out :
+       {std::vector<std::string>{"-o", "pic.png"}, {"-o", "sub/../pic.png"}, {"-o", (dir / "link.png").string()},
+        {"-o", "knots.csv", "--format", "png"}}) {
+    std::vector<std::string> args{"render", "-"};
+    args.insert(args.end(), out.begin(), out.end());
+    const auto r = run(args, spec);
+    INFO(out[1]);
+    check_one_line_failure(r, 2, "-o " + out[1] + ": it is stdin:");
+    CHECK_THAT(r.err, Catch::Contains(", an input (write to another file)"));
+    CHECK_THAT(r.err, Catch::Contains(out[1] == "knots.csv" ? "points_file = \"knots.csv\"" : "file = \"pic.png\""));
+    CHECK_THAT(r.err, !Catch::Contains("stdin.toml"));  // said as stdin, not as a scratch copy
+  }
+  CHECK(slurp(dir / "pic.png") == pic);
+  CHECK(slurp(dir / "knots.csv") == csv);
+  // Another name is written as before.
+  CHECK(run({"render", "-", "-o", "out.png"}, spec).code == 0);
+  CHECK(slurp(dir / "out.png").starts_with("\x89PNG"));
+  fs::current_path(here.old);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("stdio: resample - -o - gives the bytes of the file run, in the format --format names") {
   const fs::path dir = scratch("resample");
   const std::string src = (dir / "bias.png").string();
