@@ -68,7 +68,23 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, d
                    const Guides& g) {
   PreparedAxes prepared = prepare_axes(spec);
   const AxesSpec& ax = prepared.axes;
-  const Panel panel = layout_panel(prepared, cell, canvas.width(), canvas.height(), p, g);
+  // A text the layout measures and the renderer refuses (bad markup, too many combining
+  // marks) is named as when it is drawn: FILE:LINE: axes.
+  const Panel panel = [&] {
+    try {
+      return layout_panel(prepared, cell, canvas.width(), canvas.height(), p, g);
+    } catch (const KeyError&) {
+      throw;
+    } catch (const LayoutRefused&) {
+      throw;
+    } catch (const SpecFileError&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw SpecFileError(ax.where + ": axes: " + e.what());
+    }
+  }();
   sample_paths(prepared, panel.map, 0.05 / scale);
   draw_under(ax, panel, p, g);
   AxesInfo info;
@@ -85,9 +101,29 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, d
     for (const PlacedText& t : *v)
       if (!t.text.empty()) add_box(t.what, t.rect);
   if (legend) add_box("legend", *legend);
-  for (std::size_t i = first_op; i < end_op; ++i)
-    if (const auto* t = std::get_if<TextOp>(&p.ops()[i]))
-      add_box("text", text_rect(p.measure(t->text, t->font), t->at, t->anchor, t->angle));
+  // The elements' texts (inline labels, [[axes.text]], annotations) stay inside the canvas and
+  // clear of the guides' texts and the legend: an error naming the element if not.
+  const std::size_t guide_boxes = info.text_boxes.size();
+  for (std::size_t i = first_op; i < end_op; ++i) {
+    const auto* t = std::get_if<TextOp>(&p.ops()[i]);
+    if (!t) continue;
+    const Rect r = text_rect(p.measure(t->text, t->font), t->at, t->anchor, t->angle);
+    std::string why;
+    if (r.left < canvas.left || r.top < canvas.top || r.right > canvas.right || r.bottom > canvas.bottom)
+      why = "would leave the canvas";
+    const Rect s = {r.left * scale, r.top * scale, r.right * scale, r.bottom * scale};
+    for (std::size_t j = 0; j < guide_boxes && why.empty(); ++j) {
+      const auto& b = info.text_boxes[j].box;
+      if (rects_meet(s, {b[0], b[1], b[2], b[3]})) why = "would meet the axes' " + info.text_boxes[j].what;
+    }
+    if (!why.empty()) {
+      const std::string& origin = p.origin_of(i);
+      throw SpecFileError((origin.empty() ? spec.where + ": axes" : origin) + ": its text " + why + " (the canvas " +
+                          std::to_string(static_cast<long long>(canvas.width())) + "x" +
+                          std::to_string(static_cast<long long>(canvas.height())) + ")");
+    }
+    add_box("text", r);
+  }
   info.pixel_box = {panel.box.left * scale, panel.box.top * scale, panel.box.right * scale, panel.box.bottom * scale};
   info.x_range = panel.x_range;
   info.y_range = panel.y_range;

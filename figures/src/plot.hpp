@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace splinefig::figures::detail {
@@ -108,10 +109,15 @@ double tick_pixel(const AxisMap& m, double value);
 // Data bounds of the elements (for axes without a range).
 void data_bounds(const PreparedAxes& ax, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& has_x, bool& has_y);
 
+// The layout's refusal: the canvas leaves too small a plot box for the panel's texts.
+struct LayoutRefused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Lays the panel out inside `cell` on a canvas of `canvas_w` x `canvas_h` layout units: every
 // text box measured, ticks thinned where their labels would meet, the box shrunk to leave room
-// for the texts; throws std::runtime_error (the canvas leaves too small a plot box) when the
-// texts cannot all be placed apart from each other and inside the canvas.
+// for the texts; throws LayoutRefused when the texts cannot all be placed apart from each
+// other and inside the canvas.
 Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas_w, double canvas_h, const Painter& p,
                    const Guides& g);
 // The smallest plot box a panel can have (each way).

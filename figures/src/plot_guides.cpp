@@ -106,6 +106,12 @@ Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>
       if (score < best) best = score, best_rect = r;
     }
   }
+  // No spot next to the data inside the box: the best one moved into it, if the text fits.
+  if (best >= 1e6 && w <= inside.width() && h <= inside.height()) {
+    const double dx = std::max(0.0, inside.left - best_rect.left) - std::max(0.0, best_rect.right - inside.right);
+    const double dy = std::max(0.0, inside.top - best_rect.top) - std::max(0.0, best_rect.bottom - inside.bottom);
+    best_rect = {best_rect.left + dx, best_rect.top + dy, best_rect.right + dx, best_rect.bottom + dy};
+  }
   occ.mark_rect(best_rect.inflated(1), 4);
   return {best_rect.left, best_rect.top + e.ascent};
 }

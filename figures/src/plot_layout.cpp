@@ -514,7 +514,7 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas
                       px(need_h) + " px";
     if (small) msg += need_why.empty() ? "" : " " + need_why;
     else msg += ", and room: " + problem;
-    throw std::runtime_error(msg);
+    throw LayoutRefused(msg);
   }
   return panel;
 }

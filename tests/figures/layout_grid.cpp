@@ -209,3 +209,25 @@ TEST_CASE("layout grid: rendered, no ink lies inside an empty plot box or outsid
     if (!c.rotated) CHECK(bands == static_cast<int>(a.y_ticks.size()));
   }
 }
+
+TEST_CASE("layout grid: an element's text over a tick label or off the canvas is an error naming the element") {
+  const std::string head = "[canvas]\nwidth = 320\nheight = 200\n[axes]\nx_range = [0, 3]\ny_range = [0, 1]\n";
+  auto message = [&](const std::string& element) {
+    try {
+      layout_figure(parse_spec(head + element, "text.toml"));
+    } catch (const SpecFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // 14 px below y = 0 is where the x tick labels are (9 px below the box, 9 px high).
+  CHECK(message("[[axes.text]]\nat = [1, 0]\ntext = \"over the ticks\"\noffset = [0, 14]\n") ==
+        "text.toml:7: axes.text[0]: its text would meet the axes' x tick label (the canvas 320x200)");
+  CHECK(message("[[axes.text]]\nat = [3, 1]\ntext = \"past the right edge\"\noffset = [60, 0]\n") ==
+        "text.toml:7: axes.text[0]: its text would leave the canvas (the canvas 320x200)");
+  // Inside the box it is drawn, and listed.
+  const FigureInfo info =
+      layout_figure(parse_spec(head + "[[axes.text]]\nat = [1.5, 0.5]\ntext = \"inside\"\n", "text.toml"));
+  const auto& boxes = info.axes.at(0).text_boxes;
+  CHECK(std::count_if(boxes.begin(), boxes.end(), [](const TextBox& t) { return t.what == "text"; }) == 1);
+}
