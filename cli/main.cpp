@@ -76,10 +76,10 @@ int main(int argc, char** argv) {
   app.add_option_function<std::string>(
          "--completion",
          [&app](const std::string& shell) {
+           if (shell != "bash" && shell != "zsh") throw CLI::ValidationError("--completion " + printable(shell) + ": not bash or zsh");
            throw Reference{shell == "bash" ? bash_completion(app) : zsh_completion(app)};
          },
          "Print the completion script for bash or zsh")
-      ->check(CLI::IsMember({"bash", "zsh"}))
       ->type_name("SHELL")
       ->group("")
       ->trigger_on_parse();
@@ -100,6 +100,7 @@ int main(int argc, char** argv) {
     }
   } else {
     const std::string flag = first.substr(0, first.find('='));
+    if (flag == "--completion" && argc == 2 && first == flag) return fail("splinefig", "--completion needs a value: bash or zsh");
     if (const auto all = flag_names(app, true); std::find(all.begin(), all.end(), flag) == all.end()) {
       auto near = near_flags(flag, flag_names(app));
       const auto dashes = flag.find_first_not_of('-');

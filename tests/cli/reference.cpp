@@ -390,3 +390,22 @@ TEST_CASE("reference: every value the man page and the completions offer for an 
   CHECK(checked > 30);
   fs::remove_all(dir);
 }
+
+TEST_CASE("reference: --help-man and --completion are hidden, and a bad shell is one line") {
+  const auto help = run({"--help"});
+  CHECK_THAT(help.out, !Catch::Contains("--help-man"));
+  CHECK_THAT(help.out, !Catch::Contains("--completion"));
+  const auto near = run({"--hel"});
+  CHECK(near.code == 2);
+  CHECK_THAT(near.err, Catch::Contains("(did you mean --help?)"));
+  for (const auto& [args, says] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--completion", "fish"}, "splinefig: --completion fish: not bash or zsh"},
+           {{"--completion"}, "splinefig: --completion needs a value: bash or zsh"}}) {
+    const auto r = run(args);
+    INFO(r.err);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(splinefig::test::count_lines(r.err) == 1);
+    CHECK_THAT(r.err, Catch::Contains(says));
+  }
+}
