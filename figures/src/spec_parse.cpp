@@ -6,6 +6,7 @@
 #include <splinefig/image/io.hpp>
 #include <splinefig/renderer/renderer.hpp>
 #include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/points_csv.hpp>
 
 #include <algorithm>
 #include <array>
@@ -22,7 +23,7 @@ Basis checked_basis(TableReader& r, std::string_view key, const std::string& spe
   try {
     return parse_basis(spec);
   } catch (const std::exception& e) {
-    r.fail(key, std::string("basis \"") + spec + "\": " + e.what());
+    r.fail(key, "basis " + excerpt(spec) + ": " + e.what());
   }
 }
 

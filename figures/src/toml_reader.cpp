@@ -3,6 +3,8 @@
 
 #include "rich_text.hpp"
 
+#include <splinefig/spline/points_csv.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -299,36 +301,11 @@ std::string TableReader::string(std::string_view key, const std::string& fallbac
   return opt_string(key).value_or(fallback);
 }
 
-namespace {
-
-// A label as a message quotes it: at most 40 bytes (cut at a character boundary, "..." after
-// it and the label's size), control characters as \xNN, so that a 100 KB label is not repeated.
-std::string label_excerpt(const std::string& s) {
-  constexpr std::size_t kMax = 40;
-  std::size_t end = std::min(s.size(), kMax);
-  while (end < s.size() && end > 0 && (static_cast<unsigned char>(s[end]) & 0xc0) == 0x80) --end;
-  std::string out = "\"";
-  for (std::size_t i = 0; i < end; ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c < 0x20 || c == 0x7f) {
-      char hex[5];
-      std::snprintf(hex, sizeof hex, "\\x%02x", c);
-      out += hex;
-    } else {
-      out += s[i];
-    }
-  }
-  out += end < s.size() ? "...\" (" + std::to_string(s.size()) + " bytes)" : "\"";
-  return out;
-}
-
-}  // namespace
-
 std::optional<std::string> TableReader::opt_label(std::string_view key) {
   auto s = opt_string(key);
   if (s) {
     std::string problem = markup_problem(*s);
-    if (!problem.empty()) fail(key, label_excerpt(*s) + ": " + problem);
+    if (!problem.empty()) fail(key, excerpt(*s) + ": " + problem);
   }
   return s;
 }
@@ -341,7 +318,7 @@ std::vector<std::string> TableReader::labels(std::string_view key) {
   auto v = strings(key);
   for (const auto& s : v) {
     std::string problem = markup_problem(s);
-    if (!problem.empty()) fail(key, label_excerpt(s) + ": " + problem);
+    if (!problem.empty()) fail(key, excerpt(s) + ": " + problem);
   }
   return v;
 }

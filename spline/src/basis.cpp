@@ -2,6 +2,7 @@
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/kernel.hpp>
 #include <splinefig/spline/near_miss.hpp>
+#include <splinefig/spline/points_csv.hpp>
 
 #include <algorithm>
 #include <array>
@@ -112,6 +113,13 @@ Basis uniform_bspline(int n) {
 
 namespace {
 
+// User text a message repeats: as given when at most 40 bytes of printable ASCII, else as
+// excerpt() quotes it (cut at 40 bytes, with its size).
+std::string clipped(std::string_view text) {
+  const bool plain = text.size() <= 40 && std::all_of(text.begin(), text.end(), [](char c) { return c >= 0x20 && c < 0x7f; });
+  return plain ? std::string(text) : excerpt(text, '\'');
+}
+
 // One number: a decimal (from_chars' general format, a leading '+' allowed), or an exact
 // rational P/Q of integers (Q > 0), the double nearest P/Q (one rounding when |P|, |Q| <= 2^53),
 // as the docs write the defaults: mitchell-netravali:b=1/3,c=1/3.
@@ -125,14 +133,14 @@ double parse_number(std::string_view name, std::string_view key, std::string_vie
     };
     const std::string_view p = text.substr(0, slash), q = text.substr(slash + 1);
     if (!integer(p, true) || !integer(q, false))
-      throw SpecError(what + "is not a number or a fraction P/Q of integers: '" + std::string(text) + "'");
+      throw SpecError(what + "is not a number or a fraction P/Q of integers: " + excerpt(text, '\''));
     const std::string_view ps = p[0] == '+' ? p.substr(1) : p;
     double num = 0, den = 0;
     std::from_chars(ps.data(), ps.data() + ps.size(), num);  // digits (after a '-'): cannot fail
     std::from_chars(q.data(), q.data() + q.size(), den);
-    if (den == 0) throw SpecError(what + "divides by zero: '" + std::string(text) + "'");
+    if (den == 0) throw SpecError(what + "divides by zero: " + excerpt(text, '\''));
     const double v = num / den;
-    if (!std::isfinite(v)) throw SpecError(what + "is out of the range of a double: '" + std::string(text) + "'");
+    if (!std::isfinite(v)) throw SpecError(what + "is out of the range of a double: " + excerpt(text, '\''));
     return v;
   }
   double v = 0;
@@ -141,10 +149,10 @@ double parse_number(std::string_view name, std::string_view key, std::string_vie
   if (!text.empty() && *first == '+') ++first;
   auto [ptr, ec] = std::from_chars(first, last, v);
   if (!text.empty() && first != last && ec == std::errc::result_out_of_range && ptr == last)
-    throw SpecError(what + "is out of the range of a double: '" + std::string(text) + "'");
+    throw SpecError(what + "is out of the range of a double: " + excerpt(text, '\''));
   if (text.empty() || ec != std::errc() || ptr != last)
-    throw SpecError(what + "is not a number: '" + std::string(text) + "'");
-  if (!std::isfinite(v)) throw SpecError(what + "is not finite: '" + std::string(text) + "'");
+    throw SpecError(what + "is not a number: " + excerpt(text, '\''));
+  if (!std::isfinite(v)) throw SpecError(what + "is not finite: " + excerpt(text, '\''));
   return v;
 }
 
@@ -165,19 +173,21 @@ Basis parse_basis(std::string_view spec) {
   std::string_view name = spec.substr(0, colon);
   // "mitchell", the name OpenImageIO and libvips give the filter, is mitchell-netravali.
   if (name == "mitchell") name = "mitchell-netravali";
+  // The name as messages say it: as given when short, else quoted and cut (excerpt).
+  const std::string shown = clipped(name);
   std::map<std::string, double, std::less<>> params;
   std::map<std::string, std::string, std::less<>> raw;
   if (colon != std::string_view::npos) {
     std::string_view rest = spec.substr(colon + 1);
-    if (rest.empty()) throw SpecError(std::string(name) + ": empty parameter list after ':'");
+    if (rest.empty()) throw SpecError(shown + ": empty parameter list after ':'");
     while (true) {
       const auto comma = rest.find(',');
       const std::string_view item = rest.substr(0, comma);
       const auto eq = item.find('=');
       if (eq == std::string_view::npos || eq == 0)
-        throw SpecError(std::string(name) + ": parameter '" + std::string(item) + "' is not key=value");
+        throw SpecError(shown + ": parameter " + excerpt(item, '\'') + " is not key=value");
       const std::string key(item.substr(0, eq));
-      if (raw.count(key)) throw SpecError(std::string(name) + ": parameter '" + key + "' given twice");
+      if (raw.count(key)) throw SpecError(shown + ": parameter " + excerpt(key, '\'') + " given twice");
       raw[key] = std::string(item.substr(eq + 1));
       if (comma == std::string_view::npos) break;
       rest = rest.substr(comma + 1);
@@ -190,10 +200,10 @@ Basis parse_basis(std::string_view spec) {
       if (!ok) {
         std::string list;
         for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + std::string(a.first);
-        throw SpecError(std::string(name) + ": unknown parameter '" + key + "'" +
+        throw SpecError(shown + ": unknown parameter " + excerpt(key, '\'') +
                         (list.empty() ? " (it takes none)" : " (known: " + list + ")"));
       }
-      params[key] = parse_number(name, key, text);
+      params[key] = parse_number(shown, key, text);
     }
     for (const auto& a : allowed)
       if (!params.count(a.first)) params[a.first] = a.second;
@@ -204,7 +214,7 @@ Basis parse_basis(std::string_view spec) {
     return catmull_rom();
   }
   // The parameters as the user gave them (the default where not given), for messages.
-  auto given = [&](const char* key) { return key + std::string("=") + (raw.count(key) ? raw[key] : fmt(params[key])); };
+  auto given = [&](const char* key) { return key + std::string("=") + (raw.count(key) ? clipped(raw[key]) : fmt(params[key])); };
   // Cardinal C_a and Duff's B_a have the tangent a (x1 - x-1) resp. a/2 (x1 - x-1) at knot x0: a < 0
   // turns it backwards at every knot; a = 0 stops there (the control polygon, their common limit).
   auto forward = [&](const char* family, const char* range) {
@@ -249,9 +259,9 @@ Basis parse_basis(std::string_view spec) {
     take({{"degree", 3.0}});
     const double d = params["degree"];
     if (d != std::floor(d))
-      throw SpecError("uniform-bspline: degree=" + raw["degree"] + " is not an integer");
+      throw SpecError("uniform-bspline: " + given("degree") + " is not an integer");
     if (d < 1 || d > 20)
-      throw SpecError("uniform-bspline: degree=" + raw["degree"] + " is out of range (1..20)");
+      throw SpecError("uniform-bspline: " + given("degree") + " is out of range (1..20)");
     return uniform_bspline(static_cast<int>(d));
   }
   if (name == "mitchell-netravali") {
@@ -259,7 +269,7 @@ Basis parse_basis(std::string_view spec) {
     return mitchell_netravali_basis(params["b"], params["c"]);
   }
   const auto near = near_misses(name, split_names(known_bases()));
-  throw SpecError("unknown basis '" + std::string(name) + "' (" + (near.empty() ? "" : "did you mean " + or_list(near) + "? ") +
+  throw SpecError("unknown basis " + excerpt(name, '\'') + " (" + (near.empty() ? "" : "did you mean " + or_list(near) + "? ") +
                   "known: " + known_bases() + ")");
 }
 

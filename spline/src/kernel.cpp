@@ -1,6 +1,7 @@
 // Basis functions as kernels, exactly from the matrix columns; the kernel spec parser.
 #include <splinefig/spline/kernel.hpp>
 #include <splinefig/spline/near_miss.hpp>
+#include <splinefig/spline/points_csv.hpp>
 
 #include <string>
 
@@ -27,8 +28,8 @@ Kernel parse_kernel(std::string_view spec) {
     const std::string_view name = spec.substr(0, colon), rest = spec.substr(colon + 1);
     if (name == "box" || name == "tent" || name == "lanczos3") {
       if (rest.empty()) throw SpecError(std::string(name) + ": empty parameter list after ':'");
-      throw SpecError(std::string(name) + ": unknown parameter '" + std::string(rest.substr(0, rest.find_first_of("=,"))) +
-                      "' (it takes none" + (name == "lanczos3" ? "; its a is 3" : "") + ")");
+      throw SpecError(std::string(name) + ": unknown parameter " + excerpt(rest.substr(0, rest.find_first_of("=,")), '\'') +
+                      " (it takes none" + (name == "lanczos3" ? "; its a is 3" : "") + ")");
     }
   }
   try {
@@ -40,7 +41,7 @@ Kernel parse_kernel(std::string_view spec) {
       auto known = split_names(known_bases());
       known.insert(known.begin(), {"box", "tent", "lanczos3"});
       const auto near = near_misses(name, known);
-      throw SpecError("unknown filter '" + std::string(name) + "' (" +
+      throw SpecError("unknown filter " + excerpt(name, '\'') + " (" +
                       (near.empty() ? "" : "did you mean " + or_list(near) + "? ") +
                       "known: box, tent, lanczos3 and the bases " + known_bases() + ")");
     }

@@ -1,8 +1,10 @@
 // CSV point text in (see points_csv.hpp).
 #include <splinefig/spline/points_csv.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
@@ -181,6 +183,31 @@ Points read_csv_points(std::istream& in, std::string_view source, const CsvOptio
   }
   if (in.bad()) throw CsvError("cannot read " + std::string(source), 0);
   return pts;
+}
+
+std::string excerpt(std::string_view s, char quote) {
+  constexpr std::size_t kMax = 40;
+  std::size_t end = std::min(s.size(), kMax);
+  while (end < s.size() && end > 0 && (static_cast<unsigned char>(s[end]) & 0xc0) == 0x80) --end;
+  std::string out(1, quote);
+  for (std::size_t i = 0; i < end; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c == 0x7f) {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    } else {
+      out += s[i];
+    }
+  }
+  if (end < s.size()) {
+    out += "...";
+    out += quote;
+    out += " (" + std::to_string(s.size()) + " bytes)";
+  } else {
+    out += quote;
+  }
+  return out;
 }
 
 std::string printable(std::string_view text) {

@@ -133,3 +133,41 @@ TEST_CASE("a markup error quotes a short escaped excerpt of the label, not all o
                  "splinefig render: esc.toml:5: text[0].text: \"a\\x1b[2J $x^\": a dangling ^ at the end");
   fs::remove_all(dir);
 }
+
+TEST_CASE("a basis spec's parameters are quoted at most 40 bytes long, in flags and in specs") {
+  const fs::path dir = scratch();
+  const std::string ones(10000, '1');
+  // A value, a parameter that is not key=value, an unknown name, a fixed kernel's parameter:
+  // 40 bytes of each, "...", and its size, wherever the user typed 10000.
+  check_one_line(run_in(dir, {"kernel", "--basis", "mitchell-netravali:b=x" + ones}), 2,
+                 "splinefig kernel: --basis: mitchell-netravali: value of 'b' is not a number: 'x" + std::string(39, '1') +
+                     "...' (10001 bytes)");
+  check_one_line(run_in(dir, {"kernel", "--basis", "mitchell-netravali:b=" + ones}), 2,
+                 "splinefig kernel: --basis: mitchell-netravali: value of 'b' is out of the range of a double: '" +
+                     std::string(40, '1') + "...' (10000 bytes)");
+  check_one_line(run_in(dir, {"resample", "in.png", "-o", "out.png", "--scale", "2", "--filter", "mitchell-netravali:" + ones}), 2,
+                 "splinefig resample: --filter: mitchell-netravali: parameter '" + std::string(40, '1') +
+                     "...' (10000 bytes) is not key=value");
+  check_one_line(run_in(dir, {"eval", "--basis", "z" + ones + ":b=1"}), 2,
+                 "splinefig eval: --basis: unknown basis 'z" + std::string(39, '1') +
+                     "...' (10001 bytes) (known: catmull-rom, cardinal, bspline, tensioned-bspline, beta, uniform-bspline, "
+                     "mitchell-netravali)");
+  check_one_line(run_in(dir, {"kernel", "--basis", "box:" + ones + "=1"}), 2,
+                 "splinefig kernel: --basis: box: unknown parameter '" + std::string(40, '1') + "...' (10000 bytes) (it takes none)");
+  // A valid number of 10000 digits, said back in a message about its sign.
+  check_one_line(run_in(dir, {"kernel", "--basis", "cardinal:a=-0." + ones}), 2,
+                 "splinefig kernel: --basis: cardinal: a='-0." + std::string(37, '1') +
+                     "...' (10003 bytes) is negative: the tangent at every knot would point backwards (a >= 0; a = 0 is the "
+                     "control polygon, 0.5 Catmull-Rom)");
+  // In a spec: the canvas filter, and a curve's basis (whose message also quotes the spec).
+  check_one_line(render_spec(dir, "filter", kCanvas + "filter = \"mitchell-netravali:c=x" + ones + "\"\n"), 2,
+                 "splinefig render: filter.toml:4: canvas.filter: mitchell-netravali: value of 'c' is not a number: 'x" +
+                     std::string(39, '1') + "...' (10001 bytes)");
+  check_one_line(render_spec(dir, "curve", kCanvas + "[axes]\n[[axes.curve]]\nknots = [[0, 0], [1, 1], [2, 0], [3, 1]]\n"
+                                                     "basis = \"beta:b1=" + ones + "\"\n"),
+                 2,
+                 "splinefig render: curve.toml:7: axes.curve[0].basis: basis \"beta:b1=" + std::string(32, '1') +
+                     "...\" (10008 bytes): beta: value of 'b1' is out of the range of a double: '" + std::string(40, '1') +
+                     "...' (10000 bytes)");
+  fs::remove_all(dir);
+}

@@ -52,4 +52,10 @@ bool parse_csv_number(std::string_view text, double& value, std::string& why);
 // terminal nor hide in the message.
 std::string printable(std::string_view text);
 
+// Text the user gave (a label, a basis spec's parameter, a flag's value) as a one-line message
+// quotes it: between `quote`s, at most 40 bytes (cut at a character boundary, "..." after it and
+// the text's size), control characters and DEL as \xNN, so that a 100 KB label is not
+// repeated: "\"$AAAA...\" (100002 bytes)".
+std::string excerpt(std::string_view text, char quote = '"');
+
 }  // namespace splinefig
