@@ -149,7 +149,23 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
     Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
-    p.set_origin(spec.title_origin.empty() ? spec.path + ": title" : spec.title_origin);
+    const std::string origin = spec.title_origin.empty() ? spec.path + ": title" : spec.title_origin;
+    p.set_origin(origin);
+    // A title wider than the canvas's margins shrinks (not below 9 px), else is refused.
+    const double room = W - 2 * std::max(0.0, L.margin);
+    double width = 0;
+    naming_origin(origin, [&] { width = p.measure(spec.title, tf).width; });
+    if (width > room) {
+      const double full = width;
+      tf.size = std::min(tf.size, std::floor(2 * tf.size * room / width) / 2);
+      while (tf.size >= 9 && (width = p.measure(spec.title, tf).width) > room) tf.size -= 0.5;
+      if (tf.size < 9 || width > room)
+        throw SpecFileError(origin + ": the canvas " + std::to_string(static_cast<long long>(W)) + "x" +
+                            std::to_string(static_cast<long long>(H)) + " leaves " +
+                            std::to_string(static_cast<long long>(std::max(0.0, std::floor(room)))) +
+                            " px across for the title; it needs at least " +
+                            std::to_string(static_cast<long long>(std::ceil(full * 9 / spec.title_size))) + " px (its text at 9 px)");
+    }
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;
   }

@@ -231,3 +231,29 @@ TEST_CASE("layout grid: an element's text over a tick label or off the canvas is
   const auto& boxes = info.axes.at(0).text_boxes;
   CHECK(std::count_if(boxes.begin(), boxes.end(), [](const TextBox& t) { return t.what == "text"; }) == 1);
 }
+
+TEST_CASE("layout grid: a figure title wider than the canvas shrinks inside it, or is refused in one line") {
+  const std::string body = "[axes]\nx_range = [0, 3]\ny_range = [0, 1]\n";
+  auto spec = [&](int w) {
+    return "title = \"" + kLong + ".\"\n[canvas]\nwidth = " + std::to_string(w) + "\nheight = 200\n" + body;
+  };
+  // At 18 px bold the title is about 420 px wide: on 240 px it shrinks; its ink keeps off the
+  // canvas's edge columns (a title cut by the edge inks them) and off the plot box.
+  const RenderedFigure f = render_figure(parse_spec(spec(240), "title.toml"), {1, 1});
+  const AxesInfo& a = f.info.axes.at(0);
+  long edge = 0, title_ink = 0;
+  for (int y = 0; y < static_cast<int>(a.pixel_box[1]) - 8; ++y) {
+    edge += ink(f, 0, y) + ink(f, 1, y) + ink(f, f.image.width - 1, y) + ink(f, f.image.width - 2, y);
+    for (int x = 0; x < f.image.width; ++x) title_ink += ink(f, x, y);
+  }
+  CHECK(edge == 0);
+  CHECK(title_ink > 200);  // the title is drawn
+  std::string msg;
+  try {
+    layout_figure(parse_spec(spec(160), "title.toml"));
+  } catch (const SpecFileError& e) {
+    msg = e.what();
+  }
+  CHECK(std::regex_match(msg, std::regex("title\\.toml:1: title: the canvas 160x200 leaves 128 px across for the title; "
+                                         "it needs at least [0-9]+ px \\(its text at 9 px\\)")));
+}
