@@ -477,7 +477,8 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas
     panel.legend = Rect{b.right + kLegendOutsideGap, b.top, b.right + kLegendOutsideGap + legend_wh[0], b.top + legend_wh[1]};
 
   // ---- The checks: a big enough box, every text inside the canvas and apart ----------------
-  double need_w = kMinPlotBox, need_h = kMinPlotBox;
+  // A panel without guides (an image tile) needs only a pixel.
+  double need_w = guides ? kMinPlotBox : 1, need_h = guides ? kMinPlotBox : 1;
   std::string need_why;
   auto need = [&](double w, double h, const std::string& why) {
     if (w > need_w || h > need_h) need_why = why;
