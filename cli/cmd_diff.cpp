@@ -9,7 +9,9 @@
 #include <splinefig/image/io.hpp>
 #include <splinefig/compare/visualize.hpp>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -28,14 +30,43 @@ struct DiffArgs {
   std::string mask, diff_image, triptych;
 };
 
-void check_threshold(const char* flag, double v, bool allow_inf = false) {
-  if (std::isnan(v) || v < 0.0 || (!allow_inf && std::isinf(v)))
-    throw cli::Failure(std::string(flag) + " must be a " + (allow_inf ? "" : "finite ") +
-                       "number >= 0, got " + cli::number_text(v));
+// A number flag's value as the user typed it (the last time it was given): `v` read from that
+// text as a double (strtod: `overflow` when it is beyond a double's range, as 1e400 is), and
+// `said` the flag and the value as a message names them: the value in its shortest form when it
+// reads as a finite double ("--fail -1e+300"), else as typed, at most 40 bytes ("--fail 1e400").
+// A flag not given keeps its default, `stored`.
+struct Typed {
+  double v;
+  bool overflow;
+  std::string said;
+};
+
+Typed typed(const CLI::App& app, const char* flag, double stored) {
+  const CLI::Option* o = app.get_option_no_throw(flag);
+  if (!o || o->count() == 0 || o->results().empty()) return {stored, false, std::string(flag) + " " + cli::number_text(stored)};
+  const std::string& text = o->results().back();
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  const bool whole = !text.empty() && end == text.c_str() + text.size();
+  const bool overflow = whole && errno == ERANGE && std::isinf(v);
+  const std::string shown = whole && std::isfinite(v) ? cli::number_text(v) : text.size() <= 40 ? text : excerpt(text);
+  return {whole ? v : stored, overflow, std::string(flag) + " " + shown};
 }
 
-void check_percent(const char* flag, double v) {
-  if (!(v >= 0.0 && v <= 100.0)) throw cli::Failure(std::string(flag) + " must be a percentage in [0, 100]");
+// Thresholds are floats: a number >= 0 that reads as a finite float (`stored`, CLI11's reading:
+// 3.4028235e+38 is the largest); `allow_inf`: also inf as typed (no limit: --hardfail's and
+// --hardwarn's default), not a number that overflows to it.
+void check_threshold(const CLI::App& app, const char* flag, float stored, bool allow_inf = false) {
+  const Typed n = typed(app, flag, stored);
+  const bool inf = std::isinf(n.v) && n.v > 0 && !n.overflow;
+  if (!(n.v >= 0.0 && std::isfinite(stored)) && !(allow_inf && inf))
+    throw cli::Failure(n.said + ": must be a number in [0, 3.4028235e+38] (a float)" + (allow_inf ? ", or inf for none" : ""));
+}
+
+void check_range(const CLI::App& app, const char* flag, double stored, double lo, double hi, const char* what) {
+  const Typed n = typed(app, flag, stored);
+  if (!(n.v >= lo && n.v <= hi)) throw cli::Failure(n.said + ": must be " + what);
 }
 
 Image load(const std::string& path, bool linear) {
@@ -54,22 +85,24 @@ void write(const std::string& path, const Image& im) {
   }
 }
 
-int run(const DiffArgs& args) {
+int run(const DiffArgs& args, const CLI::App& app) {
   const compare::Options& o = args.o;
   const compare::Thresholds& t = o.thresholds;
-  check_threshold("--fail", t.fail);
-  check_threshold("--warn", t.warn);
-  check_threshold("--hardfail", t.hardfail, true);
-  check_threshold("--hardwarn", t.hardwarn, true);
-  check_percent("--failpercent", t.failpercent);
-  check_percent("--warnpercent", t.warnpercent);
-  if (t.allowfailures < 0) throw cli::Failure("--allowfailures must be >= 0");
-  if (o.shift < 0 || o.shift > 64) throw cli::Failure("--shift must be an integer in [0, 64]");
-  if (o.ssim_min && !(*o.ssim_min >= -1.0 && *o.ssim_min <= 1.0)) throw cli::Failure("--ssim must be in [-1, 1]");
-  if (o.flip_max && !(*o.flip_max >= 0.0 && *o.flip_max <= 1.0)) throw cli::Failure("--flip must be in [0, 1]");
-  if (args.scale && !(std::isfinite(*args.scale) && *args.scale > 0.0f))
-    throw cli::Failure("--scale must be a finite number > 0");
-
+  check_threshold(app, "--fail", t.fail);
+  check_threshold(app, "--warn", t.warn);
+  check_threshold(app, "--hardfail", t.hardfail, true);
+  check_threshold(app, "--hardwarn", t.hardwarn, true);
+  check_range(app, "--failpercent", t.failpercent, 0, 100, "a percentage in [0, 100]");
+  check_range(app, "--warnpercent", t.warnpercent, 0, 100, "a percentage in [0, 100]");
+  if (t.allowfailures < 0) throw cli::Failure("--allowfailures " + std::to_string(t.allowfailures) + ": must be >= 0");
+  if (o.shift < 0 || o.shift > 64) throw cli::Failure("--shift " + std::to_string(o.shift) + ": must be an integer in [0, 64]");
+  if (o.ssim_min) check_range(app, "--ssim", *o.ssim_min, -1, 1, "in [-1, 1]");
+  if (o.flip_max) check_range(app, "--flip", *o.flip_max, 0, 1, "in [0, 1]");
+  if (args.scale) {
+    const Typed n = typed(app, "--scale", *args.scale);
+    if (!(n.v > 0.0 && std::isfinite(*args.scale) && *args.scale > 0.0f))
+      throw cli::Failure(n.said + ": must be a number in (0, 3.4028235e+38] (a float)");
+  }
 
   // `-` is stdin for one of A and B; stdout holds the report.
   if (cli::is_stdio(args.a) && cli::is_stdio(args.b)) throw cli::Failure("A and B are both - (stdin holds one image)");
@@ -172,7 +205,7 @@ const cli::Registration reg{
       return cli::Runner([args, &app] {
         if (app.count("--scale") && args->diff_image.empty() && args->triptych.empty())
           throw cli::Failure("--scale applies only to --diff-image and --triptych");
-        return run(*args);
+        return run(*args, app);
       });
     }};
 

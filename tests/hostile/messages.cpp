@@ -112,7 +112,7 @@ TEST_CASE("a number out of range is said back in its shortest form") {
   check_one_line(run_in(dir, {"figures", "--dpi", "10000.0001", "--out", "out"}), 2,
                  "splinefig figures: --dpi 10000.0001: must be in [1, 10000]");
   check_one_line(run_in(dir, {"diff", "a.png", "b.png", "--fail", "-0.5"}), 2,
-                 "splinefig diff: --fail must be a finite number >= 0, got -0.5");
+                 "splinefig diff: --fail -0.5: must be a number in [0, 3.4028235e+38] (a float)");
   fs::remove_all(dir);
 }
 
@@ -169,5 +169,41 @@ TEST_CASE("a basis spec's parameters are quoted at most 40 bytes long, in flags 
                  "splinefig render: curve.toml:7: axes.curve[0].basis: basis \"beta:b1=" + std::string(32, '1') +
                      "...\" (10008 bytes): beta: value of 'b1' is out of the range of a double: '" + std::string(40, '1') +
                      "...' (10000 bytes)");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("diff refuses a negative, NaN or out-of-range threshold, saying the flag and the value as typed") {
+  const fs::path dir = scratch();
+  const std::string fl = ": must be a number in [0, 3.4028235e+38] (a float)";  // FLT_MAX, 2^128 - 2^104
+  auto diff = [&](const std::string& flag, const std::string& value) {
+    return run_in(dir, {"diff", "a.png", "b.png", flag, value});
+  };
+  // -1e300 is a double but no float (it was read as -inf); 1e400 is no double either; 1e39 became
+  // inf, which --hardfail took for no limit.
+  check_one_line(diff("--fail", "-1e300"), 2, "splinefig diff: --fail -1e+300" + fl);
+  check_one_line(diff("--fail", "1e400"), 2, "splinefig diff: --fail 1e400" + fl);
+  check_one_line(diff("--warn", "1e39"), 2, "splinefig diff: --warn 1e+39" + fl);
+  check_one_line(diff("--warn", "nan"), 2, "splinefig diff: --warn nan" + fl);
+  check_one_line(diff("--fail", "inf"), 2, "splinefig diff: --fail inf" + fl);
+  check_one_line(diff("--hardfail", "-1e300"), 2, "splinefig diff: --hardfail -1e+300" + fl + ", or inf for none");
+  check_one_line(diff("--hardfail", "1e39"), 2, "splinefig diff: --hardfail 1e+39" + fl + ", or inf for none");
+  check_one_line(diff("--hardwarn", "1e400"), 2, "splinefig diff: --hardwarn 1e400" + fl + ", or inf for none");
+  check_one_line(diff("--failpercent", "-1e300"), 2, "splinefig diff: --failpercent -1e+300: must be a percentage in [0, 100]");
+  check_one_line(diff("--warnpercent", "1e400"), 2, "splinefig diff: --warnpercent 1e400: must be a percentage in [0, 100]");
+  check_one_line(diff("--ssim", "-1e300"), 2, "splinefig diff: --ssim -1e+300: must be in [-1, 1]");
+  check_one_line(diff("--flip", "1e400"), 2, "splinefig diff: --flip 1e400: must be in [0, 1]");
+  check_one_line(run_in(dir, {"diff", "a.png", "b.png", "--diff-image", "d.png", "--scale", "1e-50"}), 2,
+                 "splinefig diff: --scale 1e-50: must be a number in (0, 3.4028235e+38] (a float)");
+  check_one_line(diff("--allowfailures", "-5"), 2, "splinefig diff: --allowfailures -5: must be >= 0");
+  // A long value is quoted at most 40 bytes long.
+  check_one_line(diff("--fail", "1" + std::string(500, '0')), 2,
+                 "splinefig diff: --fail \"1" + std::string(39, '0') + "...\" (501 bytes)" + fl);
+  // The largest float and inf for no hard limit are thresholds; -0 is 0. With no images to read,
+  // the command gets past the flags to the reading (exit 4).
+  for (const auto& [flag, value] : {std::pair{"--fail", "3.4028235e+38"}, std::pair{"--hardfail", "inf"}, std::pair{"--warn", "-0"}}) {
+    const Outcome o = diff(flag, value);
+    INFO(flag << " " << value << ": " << o.err);
+    CHECK(o.code == 4);
+  }
   fs::remove_all(dir);
 }
