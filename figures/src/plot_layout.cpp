@@ -473,6 +473,10 @@ Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas
       if (!x.text.empty() && reaches(x.rect)) hi = std::min(hi, x.rect.top - kTextGap);
     fit(std::move(t), lo, hi, false, "high");
   }
+  // Drawn in this order: the x label, the y label, the title.
+  auto rank = [](const PlacedText& t) { return t.what == "x label" ? 0 : t.what == "y label" ? 1 : 2; };
+  std::stable_sort(panel.labels.begin(), panel.labels.end(),
+                   [&](const PlacedText& a, const PlacedText& c) { return rank(a) < rank(c); });
   if (legend_outside)
     panel.legend = Rect{b.right + kLegendOutsideGap, b.top, b.right + kLegendOutsideGap + legend_wh[0], b.top + legend_wh[1]};
 
