@@ -7,9 +7,12 @@
 #include <splinefig/figures/axes.hpp>
 #include <splinefig/figures/figure.hpp>
 
+#include "support.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <vector>
@@ -149,6 +152,17 @@ TEST_CASE("layout grid: 200x100 with a title and both labels is refused, naming 
   }
   CAPTURE(msg);
   CHECK(refusal(msg, 200, 100));
+  // The command: exit 2, the one line on stderr, no file.
+  const figtest::fs::path dir = figtest::scratch("layout-grid-refused");
+  {
+    std::ofstream(dir / "grid.toml") << spec_text(200, 100, "amplitude", true, "[-0.05, 0.7]", false);
+  }
+  const figtest::Result r =
+      figtest::run(figtest::exe() + " render " + (dir / "grid.toml").string() + " -o " + (dir / "out.png").string());
+  CAPTURE(r.out);
+  CHECK(r.code == 2);
+  CHECK(r.out == "splinefig render: " + (dir / "grid.toml").string() + msg.substr(std::string("grid.toml").size()) + "\n");
+  CHECK_FALSE(figtest::fs::exists(dir / "out.png"));
 }
 
 namespace {
