@@ -9,9 +9,7 @@
 #include <splinefig/image/io.hpp>
 #include <splinefig/compare/visualize.hpp>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -30,42 +28,18 @@ struct DiffArgs {
   std::string mask, diff_image, triptych;
 };
 
-// A number flag's value as the user typed it (the last time it was given): `v` read from that
-// text as a double (strtod: `overflow` when it is beyond a double's range, as 1e400 is), and
-// `said` the flag and the value as a message names them: the value in its shortest form when it
-// reads as a finite double ("--fail -1e+300"), else as typed, at most 40 bytes ("--fail 1e400").
-// A flag not given keeps its default, `stored`.
-struct Typed {
-  double v;
-  bool overflow;
-  std::string said;
-};
-
-Typed typed(const CLI::App& app, const char* flag, double stored) {
-  const CLI::Option* o = app.get_option_no_throw(flag);
-  if (!o || o->count() == 0 || o->results().empty()) return {stored, false, std::string(flag) + " " + cli::number_text(stored)};
-  const std::string& text = o->results().back();
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  const bool whole = !text.empty() && end == text.c_str() + text.size();
-  const bool overflow = whole && errno == ERANGE && std::isinf(v);
-  const std::string shown = whole && std::isfinite(v) ? cli::number_text(v) : text.size() <= 40 ? text : excerpt(text);
-  return {whole ? v : stored, overflow, std::string(flag) + " " + shown};
-}
-
 // Thresholds are floats: a number >= 0 that reads as a finite float (`stored`, CLI11's reading:
 // 3.4028235e+38 is the largest); `allow_inf`: also inf as typed (no limit: --hardfail's and
 // --hardwarn's default), not a number that overflows to it.
 void check_threshold(const CLI::App& app, const char* flag, float stored, bool allow_inf = false) {
-  const Typed n = typed(app, flag, stored);
+  const cli::TypedNumber n = cli::typed_number(app, flag, stored);
   const bool inf = std::isinf(n.v) && n.v > 0 && !n.overflow;
   if (!(n.v >= 0.0 && std::isfinite(stored)) && !(allow_inf && inf))
     throw cli::Failure(n.said + ": must be a number in [0, 3.4028235e+38] (a float)" + (allow_inf ? ", or inf for none" : ""));
 }
 
 void check_range(const CLI::App& app, const char* flag, double stored, double lo, double hi, const char* what) {
-  const Typed n = typed(app, flag, stored);
+  const cli::TypedNumber n = cli::typed_number(app, flag, stored);
   if (!(n.v >= lo && n.v <= hi)) throw cli::Failure(n.said + ": must be " + what);
 }
 
@@ -99,7 +73,7 @@ int run(const DiffArgs& args, const CLI::App& app) {
   if (o.ssim_min) check_range(app, "--ssim", *o.ssim_min, -1, 1, "in [-1, 1]");
   if (o.flip_max) check_range(app, "--flip", *o.flip_max, 0, 1, "in [0, 1]");
   if (args.scale) {
-    const Typed n = typed(app, "--scale", *args.scale);
+    const cli::TypedNumber n = cli::typed_number(app, "--scale", *args.scale);
     if (!(n.v > 0.0 && std::isfinite(*args.scale) && *args.scale > 0.0f))
       throw cli::Failure(n.said + ": must be a number in (0, 3.4028235e+38] (a float)");
   }

@@ -53,14 +53,14 @@ std::vector<std::string> split(const std::string& s) {
 }
 
 // The flags checked and turned into batch options.
-fig::BatchOptions batch_options(const FiguresArgs& a) {
-  splinefig::cli::check_output_scale(a.scale);
+fig::BatchOptions batch_options(const FiguresArgs& a, const CLI::App& app) {
+  splinefig::cli::check_output_scale(a.scale, splinefig::cli::typed_number(app, "--scale", a.scale).said);
   fig::BatchOptions o;
   o.out_dir = a.out;
   o.scale = a.scale;
   o.threads = splinefig::cli::check_threads(a.threads);
   o.software = std::string("splinefig ") + SPLINEFIG_VERSION;
-  o.dpi = splinefig::cli::check_dpi(a.dpi);
+  o.dpi = splinefig::cli::check_dpi(a.dpi, splinefig::cli::typed_number(app, "--dpi", a.dpi).said);
   o.date = fig::source_date_epoch();
   o.formats.clear();
   for (const auto& f : split(a.format)) {
@@ -107,8 +107,8 @@ std::string progress_line(const fig::BatchResult& r) {
   return buf;
 }
 
-int run(const FiguresArgs& a) {
-  const fig::BatchOptions options = batch_options(a);
+int run(const FiguresArgs& a, const CLI::App& app) {
+  const fig::BatchOptions options = batch_options(a, app);
   const std::vector<fig::SpecFile> specs = all_specs(a);
   const std::vector<fig::SpecFile> chosen = selected(specs, a.only);
   std::error_code ec;
@@ -164,7 +164,7 @@ const splinefig::cli::Registration reg{
       app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
       app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones")->type_name("PATH");
       app.footer("Example: splinefig figures --out out/figures --only bias,arclength --scale 2 --format png,svg");
-      return splinefig::cli::Runner([a] { return run(*a); });
+      return splinefig::cli::Runner([a, &app] { return run(*a, app); });
     }};
 
 }  // namespace

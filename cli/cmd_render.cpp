@@ -61,7 +61,7 @@ const splinefig::cli::Registration reg{
           ->type_name("FLOAT")->capture_default_str();
       app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
       app.footer("Example: splinefig render figures/specs/bias.toml -o bias.svg --scale 2");
-      return splinefig::cli::Runner([a] {
+      return splinefig::cli::Runner([a, &app] {
         using splinefig::cli::Failure;
         const bool to_stdout = splinefig::cli::is_stdio(a->out), from_stdin = splinefig::cli::is_stdio(a->spec);
         // The format: --format, else the extension, else png for stdout (one value, never an
@@ -89,9 +89,9 @@ const splinefig::cli::Registration reg{
         const fig::Format* const format = &chosen;
         if (!to_stdout && !from_stdin && splinefig::same_file(a->out, a->spec))
           throw Failure("-o " + a->out + ": it is the spec " + a->spec);
-        splinefig::cli::check_output_scale(a->scale);
+        splinefig::cli::check_output_scale(a->scale, splinefig::cli::typed_number(app, "--scale", a->scale).said);
         const int threads = splinefig::cli::check_threads(a->threads);
-        const double dpi = splinefig::cli::check_dpi(a->dpi);
+        const double dpi = splinefig::cli::check_dpi(a->dpi, splinefig::cli::typed_number(app, "--dpi", a->dpi).said);
         const std::string spec_name = from_stdin ? "stdin" : a->spec;
         std::string need;  // the scaled canvas, for a message about memory (as figures says it)
         try {

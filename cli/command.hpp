@@ -12,8 +12,11 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
@@ -86,9 +89,33 @@ inline std::string number_text(double v) {
   return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
 }
 
-// The flags shared by the commands that render figures.
-inline void check_output_scale(double scale) {
-  if (!(scale > 0) || scale > 64) throw Failure("--scale " + number_text(scale) + ": must be in (0, 64]");
+// A number flag's value as the user typed it (the last time it was given): `v` read from that
+// text as a double (strtod; `overflow` when beyond a double's range, as 1e400 is), and `said`
+// the flag and the value as a message names them: the value in its shortest form when it reads
+// as a finite double ("--scale -1e+300"), else as typed, at most 40 bytes ("--scale 1e400", not
+// the "inf" CLI11 stored). A flag not given is said with its value `stored`.
+struct TypedNumber {
+  double v;
+  bool overflow;
+  std::string said;
+};
+inline TypedNumber typed_number(const CLI::App& app, const std::string& flag, double stored) {
+  const CLI::Option* o = app.get_option_no_throw(flag);
+  if (!o || o->count() == 0 || o->results().empty()) return {stored, false, flag + " " + number_text(stored)};
+  const std::string& text = o->results().back();
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  const bool whole = !text.empty() && end == text.c_str() + text.size();
+  const bool overflow = whole && errno == ERANGE && std::isinf(v);
+  const std::string shown = whole && std::isfinite(v) ? number_text(v) : text.size() <= 40 ? text : excerpt(text);
+  return {whole ? v : stored, overflow, flag + " " + shown};
+}
+
+// The flags shared by the commands that render figures; `said`: the flag and its value as
+// typed_number says them (by default from the value).
+inline void check_output_scale(double scale, const std::string& said = "") {
+  if (!(scale > 0) || scale > 64) throw Failure((said.empty() ? "--scale " + number_text(scale) : said) + ": must be in (0, 64]");
 }
 // --threads N: 0 is every core; more than kMaxThreads is kMaxThreads (docs/cli.md).
 inline int check_threads(int threads) {
@@ -96,9 +123,9 @@ inline int check_threads(int threads) {
   return std::min(threads, splinefig::kMaxThreads);
 }
 // --dpi N: spec pixels per inch, 0 (the default) for none, else in [kMinDpi, kMaxDpi].
-inline double check_dpi(double dpi) {
+inline double check_dpi(double dpi, const std::string& said = "") {
   if (dpi != 0 && !(dpi >= splinefig::kMinDpi && dpi <= splinefig::kMaxDpi)) {
-    throw Failure("--dpi " + number_text(dpi) + ": must be in [" + number_text(splinefig::kMinDpi) + ", " +
+    throw Failure((said.empty() ? "--dpi " + number_text(dpi) : said) + ": must be in [" + number_text(splinefig::kMinDpi) + ", " +
                   number_text(splinefig::kMaxDpi) + "]");
   }
   return dpi;

@@ -111,6 +111,11 @@ TEST_CASE("a number out of range is said back in its shortest form") {
                  "splinefig render: --dpi 1e-308: must be in [1, 10000]");
   check_one_line(run_in(dir, {"figures", "--dpi", "10000.0001", "--out", "out"}), 2,
                  "splinefig figures: --dpi 10000.0001: must be in [1, 10000]");
+  // Beyond a double: as typed, not the "inf" it was read as.
+  check_one_line(run_in(dir, {"render", "s.toml", "-o", "s.png", "--scale", "1e400"}), 2,
+                 "splinefig render: --scale 1e400: must be in (0, 64]");
+  check_one_line(run_in(dir, {"figures", "--dpi", "-1e400", "--out", "out"}), 2,
+                 "splinefig figures: --dpi -1e400: must be in [1, 10000]");
   check_one_line(run_in(dir, {"diff", "a.png", "b.png", "--fail", "-0.5"}), 2,
                  "splinefig diff: --fail -0.5: must be a number in [0, 3.4028235e+38] (a float)");
   fs::remove_all(dir);
