@@ -151,20 +151,25 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
     Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
     const std::string origin = spec.title_origin.empty() ? spec.path + ": title" : spec.title_origin;
     p.set_origin(origin);
-    // A title wider than the canvas's margins shrinks (not below 9 px), else is refused.
-    const double room = W - 2 * std::max(0.0, L.margin);
-    double width = 0;
-    naming_origin(origin, [&] { width = p.measure(spec.title, tf).width; });
-    if (width > room) {
-      const double full = width;
-      tf.size = std::min(tf.size, std::floor(2 * tf.size * room / width) / 2);
-      while (tf.size >= 9 && (width = p.measure(spec.title, tf).width) > room) tf.size -= 0.5;
-      if (tf.size < 9 || width > room)
-        throw SpecFileError(origin + ": the canvas " + std::to_string(static_cast<long long>(W)) + "x" +
-                            std::to_string(static_cast<long long>(H)) + " leaves " +
-                            std::to_string(static_cast<long long>(std::max(0.0, std::floor(room)))) +
-                            " px across for the title; it needs at least " +
-                            std::to_string(static_cast<long long>(std::ceil(full * 9 / spec.title_size))) + " px (its text at 9 px)");
+    // A title wider than the canvas's margins shrinks to fit them, else to fit the canvas (not
+    // below 9 px); one that still does not fit, across or below the margin, is refused.
+    render::TextExtent e;
+    naming_origin(origin, [&] { e = p.measure(spec.title, tf); });
+    const double full = e.width, full_size = tf.size;
+    auto shrink_to = [&](double room) {
+      tf.size = full_size;
+      e = p.measure(spec.title, tf);
+      if (e.width <= room) return true;
+      tf.size = std::min(full_size, std::floor(2 * full_size * room / e.width) / 2);
+      while (tf.size >= 9 && (e = p.measure(spec.title, tf)).width > room) tf.size -= 0.5;
+      return tf.size >= 9 && e.width <= room;
+    };
+    const bool across = shrink_to(W - 2 * std::max(0.0, L.margin)) || shrink_to(W);
+    if (!across || L.margin + e.ascent + e.descent > H) {
+      const auto n = [](double v) { return std::to_string(static_cast<long long>(std::ceil(std::max(0.0, v) - 1e-9))); };
+      throw SpecFileError(origin + ": the canvas " + n(W) + "x" + n(H) + " leaves " + n(W) + " x " + n(H - L.margin) +
+                          " px for the title; it needs at least " + n(full * 9 / full_size) + " x " +
+                          n(e.ascent + e.descent) + " px (its text at 9 px), or show_title = false");
     }
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;

@@ -30,6 +30,7 @@ TEST_CASE("elements: a half-transparent red PNG over white is (255, 188, 188), p
   }
   const std::string text = R"(
 title = "alpha"
+show_title = false
 [canvas]
 width = 8
 height = 8
