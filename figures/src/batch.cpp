@@ -78,7 +78,12 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     // One line naming the figure and its size, not a bare "std::bad_alloc".
     result.error = s.path + (canvas.empty() ? ": out of memory reading the spec" : ": out of memory rendering the figure (" + canvas + ")");
   } catch (const std::exception& e) {
-    result.error = e.what();
+    // Every failure names its spec first, as render does: a spec error is located there
+    // already ("PATH:LINE: KEY: ..."); the others (an item past the sweep's work limit, an
+    // output that cannot be written, ...) get the path in front.
+    const std::string what = e.what();
+    const bool named = what.size() > s.path.size() && what.compare(0, s.path.size(), s.path) == 0 && what[s.path.size()] == ':';
+    result.error = named ? what : s.path + ": " + what;
   }
   result.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (raster_threads == 1) result.cpu_ms = thread_cpu_ms() - c0;

@@ -19,3 +19,35 @@ TEST_CASE("30000 random points on 1024^2 (about 4e8 crossings, minutes of sweepi
   spec += "]\n";
   check_refused("dense", spec, "dense.toml: item 1 (stroked polyline): its outline crosses itself at least ");
 }
+
+TEST_CASE("figures --specs: a spec past the sweep's work limit, or whose output cannot be written, is named first") {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1024);
+  std::string dense = "[canvas]\nwidth = 1024\nheight = 1024\n[[polyline]]\nwidth = 1\npoints = [";
+  char buf[64];
+  for (int i = 0; i < 30000; ++i) {
+    std::snprintf(buf, sizeof buf, "%s[%.3f, %.3f]", i ? ", " : "", u(rng), u(rng));
+    dense += buf;
+  }
+  dense += "]\n";
+  const fs::path dir = scratch();
+  fs::create_directories(dir / "specs");
+  write_file(dir / "specs" / "dense.toml", dense);
+  write_file(dir / "specs" / "blocked.toml", "[canvas]\nwidth = 24\nheight = 24\n");
+  write_file(dir / "specs" / "ok.toml", "[canvas]\nwidth = 24\nheight = 24\n");
+  fs::create_directories(dir / "out" / "blocked.png");  // a directory where the image goes
+  const Outcome o = run_in(dir, {"figures", "--specs", "specs", "--out", "out", "--threads", "2"});
+  INFO(o.err);
+  CHECK_FALSE(o.killed);
+  CHECK(o.code == 2);
+  // In spec order (blocked, dense, ok), each failure one line starting with its spec's path.
+  const auto first_nl = o.err.find('\n'), second_nl = o.err.find('\n', first_nl + 1);
+  REQUIRE(second_nl != std::string::npos);
+  CHECK_THAT(o.err.substr(0, first_nl), Catch::StartsWith("splinefig figures: specs/blocked.toml: out/blocked.png: "));
+  CHECK_THAT(o.err.substr(first_nl + 1, second_nl - first_nl - 1),
+             Catch::StartsWith("splinefig figures: specs/dense.toml: item 1 (stroked polyline): its outline crosses itself at least "));
+  CHECK(o.err.substr(second_nl + 1) == "splinefig figures: 2 of 3 figures failed\n");
+  CHECK(fs::exists(dir / "out" / "ok.png"));
+  CHECK_FALSE(fs::exists(dir / "out" / "dense.png"));
+  fs::remove_all(dir);
+}
