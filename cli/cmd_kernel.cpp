@@ -25,10 +25,13 @@ struct Options {
 
 constexpr double max_rows = 1e8;
 
+// The basis spec as a message repeats it: whole when short, else excerpt()'s 40 bytes.
+std::string shown(const std::string& basis) { return basis.size() <= 40 ? basis : excerpt(basis); }
+
 // A number about to be printed, refused if it is not finite (the kernel overflows there).
 double finite(double v, const std::string& basis, const char* what, double at) {
   if (!std::isfinite(v))
-    throw Failure("--basis " + basis + ": " + what + cli::format_number(at) + " overflows the range of a double");
+    throw Failure("--basis " + shown(basis) + ": " + what + cli::format_number(at) + " overflows the range of a double");
   return v;
 }
 
@@ -42,7 +45,7 @@ void check_report(const FilterReport& r, const std::string& basis) {
       {"mitchell_netravali B", r.bc ? r.bc->b : 0.0}, {"mitchell_netravali C", r.bc ? r.bc->c : 0.0}};
   for (const auto& [name, v] : measures)
     if (!std::isfinite(v))
-      throw Failure("--basis " + basis + ": the filter's " + name + " overflows the range of a double");
+      throw Failure("--basis " + shown(basis) + ": the filter's " + name + " overflows the range of a double");
 }
 
 // One line "x,f(x)"; a value that is not finite is an error (`what` names it: "k(x) at x = ").

@@ -164,6 +164,10 @@ TEST_CASE("a basis spec's parameters are quoted at most 40 bytes long, in flags 
                  "splinefig kernel: --basis: cardinal: a='-0." + std::string(37, '1') +
                      "...' (10003 bytes) is negative: the tangent at every knot would point backwards (a >= 0; a = 0 is the "
                      "control polygon, 0.5 Catmull-Rom)");
+  // A spec that parses, said again when its filter's energy (a^2) overflows.
+  check_one_line(run_in(dir, {"kernel", "--report", "--basis", "cardinal:a=1" + std::string(200, '0')}), 2,
+                 "splinefig kernel: --basis \"cardinal:a=1" + std::string(28, '0') +
+                     "...\" (212 bytes): the filter's energy overflows the range of a double");
   // In a spec: the canvas filter, and a curve's basis (whose message also quotes the spec).
   check_one_line(render_spec(dir, "filter", kCanvas + "filter = \"mitchell-netravali:c=x" + ones + "\"\n"), 2,
                  "splinefig render: filter.toml:4: canvas.filter: mitchell-netravali: value of 'c' is not a number: 'x" +
