@@ -152,24 +152,26 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
     const std::string origin = spec.title_origin.empty() ? spec.path + ": title" : spec.title_origin;
     p.set_origin(origin);
     // A title wider than the canvas's margins shrinks to fit them, else to fit the canvas (not
-    // below 9 px); one that still does not fit, across or below the margin, is refused.
+    // below 9 px); one that still does not fit across is refused. (A size the renderer refuses
+    // at the output scale is left to it.)
     render::TextExtent e;
     naming_origin(origin, [&] { e = p.measure(spec.title, tf); });
-    const double full = e.width, full_size = tf.size;
-    auto shrink_to = [&](double room) {
-      tf.size = full_size;
-      e = p.measure(spec.title, tf);
-      if (e.width <= room) return true;
-      tf.size = std::min(full_size, std::floor(2 * full_size * room / e.width) / 2);
-      while (tf.size >= 9 && (e = p.measure(spec.title, tf)).width > room) tf.size -= 0.5;
-      return tf.size >= 9 && e.width <= room;
-    };
-    const bool across = shrink_to(W - 2 * std::max(0.0, L.margin)) || shrink_to(W);
-    if (!across || L.margin + e.ascent + e.descent > H) {
-      const auto n = [](double v) { return std::to_string(static_cast<long long>(std::ceil(std::max(0.0, v) - 1e-9))); };
-      throw SpecFileError(origin + ": the canvas " + n(W) + "x" + n(H) + " leaves " + n(W) + " x " + n(H - L.margin) +
-                          " px for the title; it needs at least " + n(full * 9 / full_size) + " x " +
-                          n(e.ascent + e.descent) + " px (its text at 9 px), or show_title = false");
+    if (tf.size * scale <= kMaxFontSize) {
+      const double full = e.width, full_size = tf.size;
+      auto shrink_to = [&](double room) {
+        tf.size = full_size;
+        e = p.measure(spec.title, tf);
+        if (e.width <= room) return true;
+        tf.size = std::min(full_size, std::floor(2 * full_size * room / e.width) / 2);
+        while (tf.size >= 9 && (e = p.measure(spec.title, tf)).width > room) tf.size -= 0.5;
+        return tf.size >= 9 && e.width <= room;
+      };
+      if (!shrink_to(W - 2 * std::max(0.0, L.margin)) && !shrink_to(W)) {
+        const auto n = [](double v) { return std::to_string(static_cast<long long>(std::ceil(std::max(0.0, v) - 1e-9))); };
+        throw SpecFileError(origin + ": the canvas " + n(W) + "x" + n(H) + " leaves " + n(W) +
+                            " px across for the title; it needs at least " + n(full * 9 / full_size) +
+                            " px (its text at 9 px), or show_title = false");
+      }
     }
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
     top += spec.title_size * 1.25 + 10;

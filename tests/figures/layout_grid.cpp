@@ -273,6 +273,6 @@ TEST_CASE("layout grid: a figure title wider than the canvas shrinks inside it, 
   } catch (const SpecFileError& e) {
     msg = e.what();
   }
-  CHECK(std::regex_match(msg, std::regex("title\\.toml:1: title: the canvas 80x200 leaves 80 x 184 px for the title; "
-                                         "it needs at least [0-9]+ x [0-9]+ px \\(its text at 9 px\\), or show_title = false")));
+  CHECK(std::regex_match(msg, std::regex("title\\.toml:1: title: the canvas 80x200 leaves 80 px across for the title; "
+                                         "it needs at least [0-9]+ px \\(its text at 9 px\\), or show_title = false")));
 }
