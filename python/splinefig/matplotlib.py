@@ -354,22 +354,25 @@ class RendererSplinefig(RendererBase):
         verts = pts.vertices
         if pts.codes is not None:
             # Each segment's end point (control points excluded), as iter_segments gives them.
-            keep = np.isin(pts.codes, (Path.MOVETO, Path.LINETO, Path.CURVE3, Path.CURVE4))
-            ends = []
-            i, n = 0, len(pts.codes)
-            step = {Path.MOVETO: 1, Path.LINETO: 1, Path.CURVE3: 2, Path.CURVE4: 3}
-            while i < n:
-                c = pts.codes[i]
-                if c == Path.STOP:
-                    break
-                if c == Path.CLOSEPOLY:
-                    i += 1
-                    continue
-                k = step.get(int(c), 1)
-                ends.append(i + k - 1)
-                i += k
-            verts = verts[ends] if ends else verts[:0]
-            del keep
+            pcodes = pts.codes
+            stop = np.flatnonzero(pcodes == Path.STOP)
+            if len(stop):
+                pcodes, verts = pcodes[:stop[0]], verts[:stop[0]]
+            if not np.isin(pcodes, (Path.CURVE3, Path.CURVE4)).any():
+                verts = verts[pcodes != Path.CLOSEPOLY]  # every other vertex ends its segment
+            else:
+                ends = []
+                i, n = 0, len(pcodes)
+                step = {Path.MOVETO: 1, Path.LINETO: 1, Path.CURVE3: 2, Path.CURVE4: 3}
+                while i < n:
+                    c = int(pcodes[i])
+                    if c == Path.CLOSEPOLY:
+                        i += 1
+                        continue
+                    k = step.get(c, 1)
+                    ends.append(i + k - 1)
+                    i += k
+                verts = verts[ends] if ends else verts[:0]
         ext = mp.get_extents()
         margin = (stroke["width"] * 4 if stroke is not None else 0) + 2
         W, H = self.width, self.height
