@@ -394,10 +394,9 @@ class RendererSplinefig(RendererBase):
             h = int(math.ceil(ext.y1 + margin)) - y0
             stamp = _Target(Scene(w, h, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend))
             self._emit(stamp, Path(mv - (x0, y0), mp.codes), fill, stroke)
-            im = stamp.core.render(1)
-            if self.blend == "srgb":
-                im = _core.srgb_to_linear_rgba(np.ascontiguousarray(im, dtype=np.float32))
-            core.images(np.ascontiguousarray(im, dtype=np.float32), np.ascontiguousarray(offs + (x0, y0), dtype=np.float64))
+            im = stamp.core.render(1)  # in the blend space's values, which the canvas takes as they are
+            core.images(np.ascontiguousarray(im, dtype=np.float32), np.ascontiguousarray(offs + (x0, y0), dtype=np.float64),
+                        "srgb" if self.blend == "srgb" else "linear")
             t.items += len(offs)
             return
         for ox, oy in offs:

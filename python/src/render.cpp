@@ -97,7 +97,7 @@ render::Path path_of(const f64array& vertices, const u8array& codes) {
 // An (h, w, 4) RGBA array as the linear, associated-alpha image Scene::image takes: uint8 codes
 // are sRGB with straight alpha (as matplotlib's images), decoded by the library's table; float32
 // is taken as given (already linear and associated).
-std::shared_ptr<const Image> rgba_image(const py::array& a) {
+std::shared_ptr<Image> rgba_image(const py::array& a) {
   const int h = static_cast<int>(a.shape(0)), w = static_cast<int>(a.shape(1));
   if (py::isinstance<py::array_t<std::uint8_t>>(a)) {
     const auto u = u8array::ensure(a);
@@ -200,15 +200,21 @@ void bind_render(py::module_& m) {
         s.image(rgba_image(rgba), {x0, y0}, {x1, y1}, smp);
       })
       // One picture placed at many places, each its own item at its own size (nearest
-      // sampling): its pixels are held once, however many times it is drawn.
-      .def("images", [](render::Scene& s, const py::array& rgba, const f64array& origins) {
+      // sampling): its pixels are held once, however many times it is drawn. A float picture is
+      // linear light, or with encoding "srgb" sRGB-encoded values (what a Scene blending in sRGB
+      // renders), composited without a round trip through linear light.
+      .def("images", [](render::Scene& s, const py::array& rgba, const f64array& origins, const std::string& encoding) {
         if (origins.ndim() != 2 || origins.shape(1) != 2) throw py::value_error("origins: expected an (n, 2) array");
+        const Encoding enc = pick<Encoding>(encoding, "encoding", {{"linear", Encoding::linear}, {"srgb", Encoding::srgb}});
+        if (enc == Encoding::srgb && !py::isinstance<py::array_t<float>>(rgba))
+          throw py::value_error("encoding: \"srgb\" is for a float32 picture (uint8 is sRGB already)");
         const auto im = rgba_image(rgba);
+        im->encoding = enc;
         const double w = im->width, h = im->height;
         const double* o = origins.data();
         for (py::ssize_t i = 0; i < origins.shape(0); ++i, o += 2)
           s.image(im, {o[0], o[1]}, {o[0] + w, o[1] + h}, render::Scene::Sampling::Nearest);
-      })
+      }, py::arg("rgba"), py::arg("origins"), py::arg("encoding") = "linear")
       .def_property_readonly("height", &render::Scene::height)
       .def("polyline", [](render::Scene& s, const f64array& pts, bool closed, const std::array<float, 4>& color, double width,
                           const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes,

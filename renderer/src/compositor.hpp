@@ -53,10 +53,13 @@ class Compositor {
     if (space_ == BlendSpace::linear) return Paint{{c.r * a, c.g * a, c.b * a, a}};
     return Paint{{linear_to_srgb(c.r) * a, linear_to_srgb(c.g) * a, linear_to_srgb(c.b) * a, a}};
   }
-  // A premultiplied linear RGBA sample (a raster item's pixel) as a paint.
-  Paint paint_premultiplied(const float* s) const {
-    if (space_ == BlendSpace::linear || !(s[3] > 0)) return Paint{{s[0], s[1], s[2], s[3]}};
+  // A premultiplied RGBA sample (a raster item's pixel) in `from` (linear light, or
+  // sRGB-encoded values) as a paint.
+  Paint paint_premultiplied(const float* s, Encoding from = Encoding::linear) const {
+    if (from == encoding() || !(s[3] > 0)) return Paint{{s[0], s[1], s[2], s[3]}};
     const float a = s[3];
+    if (from == Encoding::srgb)
+      return Paint{{srgb_to_linear(s[0] / a) * a, srgb_to_linear(s[1] / a) * a, srgb_to_linear(s[2] / a) * a, a}};
     return Paint{{linear_to_srgb(s[0] / a) * a, linear_to_srgb(s[1] / a) * a, linear_to_srgb(s[2] / a) * a, a}};
   }
 

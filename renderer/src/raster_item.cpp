@@ -14,6 +14,20 @@ void composite_raster(const Scene::Item::Raster& r, const Compositor& comp, Imag
   auto to_range = [](double v, int lo, int hi) { return static_cast<int>(std::clamp(v, double(lo), double(hi))); };
   const int ix0 = to_range(std::floor(xlo), 0, img.width), ix1 = to_range(std::ceil(xhi), 0, img.width);
   const int iy0 = to_range(std::floor(ylo), r0, r1), iy1 = to_range(std::ceil(yhi), r0, r1);
+  if (r.nearest && x0 == std::floor(x0) && y0 == std::floor(y0) && x1 - x0 == src.width && y1 - y0 == src.height) {
+    // Pixel for pixel (a layer, or one picture placed at whole pixels): each canvas pixel takes
+    // the source pixel it covers, the one nearest sampling picks. A pixel with nothing in it
+    // leaves the canvas as over would (p * c + px * 1 = px), so it is skipped.
+    for (int y = iy0; y < iy1; ++y) {
+      const float* s = src.pixel(0, y - static_cast<int>(y0));
+      for (int x = ix0; x < ix1; ++x) {
+        const float* p = s + 4 * static_cast<std::size_t>(x - static_cast<int>(x0));
+        if (p[0] == 0 && p[1] == 0 && p[2] == 0 && p[3] == 0) continue;
+        over(img.pixel(x, y), comp.paint_premultiplied(p, src.encoding), 1.0f);
+      }
+    }
+    return;
+  }
   auto fetch = [&](int x, int y, int k) {
     x = std::clamp(x, 0, src.width - 1);
     y = std::clamp(y, 0, src.height - 1);
@@ -40,7 +54,7 @@ void composite_raster(const Scene::Item::Raster& r, const Compositor& comp, Imag
           s[k] = (1 - ty) * ((1 - tx) * fetch(px, py, k) + tx * fetch(px + 1, py, k)) +
                  ty * ((1 - tx) * fetch(px, py + 1, k) + tx * fetch(px + 1, py + 1, k));
       }
-      over(img.pixel(x, y), comp.paint_premultiplied(s), 1.0f);
+      over(img.pixel(x, y), comp.paint_premultiplied(s, src.encoding), 1.0f);
     }
   }
 }

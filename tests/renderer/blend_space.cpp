@@ -86,6 +86,30 @@ TEST_CASE("a raster item is composited in the blend space, from its linear premu
   CHECK(im.pixel(1, 1)[3] == 1.0f);
 }
 
+TEST_CASE("a raster item of sRGB-encoded pixels is composited without a trip through linear light") {
+  // One picture placed pixel for pixel at a whole-pixel offset: premultiplied encoded values
+  // (0.25, 0.1, 0, alpha 0.5), that is straight encoded (0.5, 0.2, 0).
+  auto tile = std::make_shared<splinefig::Image>(2, 1, 4, Encoding::srgb);
+  const float src[8] = {0.25f, 0.1f, 0.0f, 0.5f, 0, 0, 0, 0};  // the second pixel is empty
+  std::memcpy(tile->pixel(0, 0), src, sizeof src);
+  auto decode = [](double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); };
+  const double straight[3] = {0.5, 0.2, 0.0};
+  for (const auto space : {sr::BlendSpace::srgb, sr::BlendSpace::linear}) {
+    sr::Scene s(4, 3, {1, 1, 1, 1});
+    s.set_blend_space(space);
+    s.image(tile, {1, 1}, {3, 2}, sr::Scene::Sampling::Nearest);
+    const auto im = sr::rasterize(s, 1);
+    for (int ch = 0; ch < 3; ++ch) {
+      // Over white: in sRGB the encoded values blend; in linear light the decoded ones.
+      const double want = space == sr::BlendSpace::srgb ? straight[ch] * 0.5 + 0.5 : decode(straight[ch]) * 0.5 + 0.5;
+      CHECK(im.pixel(1, 1)[ch] == Approx(want).margin(2e-6));
+      CHECK(im.pixel(2, 1)[ch] == 1.0f);  // the empty pixel leaves white
+      CHECK(im.pixel(0, 1)[ch] == 1.0f);  // outside the rectangle
+      CHECK(im.pixel(1, 0)[ch] == 1.0f);
+    }
+  }
+}
+
 TEST_CASE("sRGB blending gives the same bytes for every thread count") {
   sr::Scene s(97, 61, {0.9f, 0.95f, 1.0f, 1.0f});
   s.set_blend_space(sr::BlendSpace::srgb);

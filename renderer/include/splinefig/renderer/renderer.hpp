@@ -141,10 +141,11 @@ class Scene {
   void fill_path(const Path& path, FillRule rule, Color color);
   void stroke_path(const Path& path, const StrokeStyle& style, Color color);
   void text(std::string_view text, Vec2 anchor, const TextStyle& style);
-  // A raster image (linear RGBA, associated alpha: the form rasterize returns) drawn into the
-  // rectangle with corners p0 and p1: each canvas pixel whose centre lies inside samples the
-  // image at that centre, nearest or bilinear (edge pixels repeated), and is composited over
-  // what is below. Not shaped by the pixel filter: the image's own pixels are the samples.
+  // A raster image (RGBA, associated alpha: the form rasterize returns, linear light or, with
+  // Encoding::srgb, sRGB-encoded values) drawn into the rectangle with corners p0 and p1: each
+  // canvas pixel whose centre lies inside samples the image at that centre, nearest or bilinear
+  // (edge pixels repeated), and is composited over what is below. Not shaped by the pixel
+  // filter: the image's own pixels are the samples.
   enum class Sampling { Nearest, Bilinear };
   void image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling sampling);
 
