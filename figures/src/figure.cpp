@@ -214,7 +214,7 @@ FigureScene figure_scene(const FigureSpec& spec, double scale) {
   check_scaled_canvas(spec, scale, spec.path);
   Painter p(scale, spec.font_family);
   FigureInfo info = build(spec, scale, p);
-  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter);
+  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter, spec.canvas.blend);
   return {std::move(scene), std::move(info)};
 }
 

@@ -124,6 +124,7 @@ Vec2 raster_size(const Raster& r);
 
 
 // The display list at the painter's scale as a scene of the given size (pixels).
-render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter);
+render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter,
+                       render::BlendSpace blend);
 
 }  // namespace splinefig::figures::detail

@@ -112,6 +112,7 @@ Canvas parse_canvas(TableReader& r) {
       r.fail("filter", e.what());
     }
   }
+  c.blend = r.choice("blend", {"linear", "srgb"}, 0) == 0 ? render::BlendSpace::linear : render::BlendSpace::srgb;
   r.finish();
   return c;
 }

@@ -38,6 +38,10 @@ struct Canvas {
   // The pixel filter: box, tent or a basis spec, read as the kernel and checked as the renderer
   // checks one (render::validate_pixel_filter).
   Kernel filter = Kernel::box();
+  // How coverage and translucent colours blend: in linear light (exact coverage as light), or in
+  // sRGB-encoded values, as SVG and PDF viewers and browsers blend (the PNG then looks like the
+  // figure's SVG and PDF).
+  render::BlendSpace blend = render::BlendSpace::linear;
 };
 
 // A stroke's look: width in pixels at 1x, colour, joins, caps and dashes.
