@@ -59,11 +59,11 @@ int main(int argc, char** argv) {
         "compare: the PNG round trip matches the render, an empty image does not");
 
   const sf::figures::FigureSpec spec = sf::figures::parse_spec(
-      "[canvas]\nwidth = 120\nheight = 80\n[axes]\nx_range = [-2, 2]\ny_range = [0, 1]\n"
+      "[canvas]\nwidth = 240\nheight = 160\n[axes]\nx_range = [-2, 2]\ny_range = [0, 1]\n"
       "[[axes.kernel]]\nbasis = \"catmull-rom\"\n",
       "consumer");
   const sf::figures::RenderedFigure fig = sf::figures::render_figure(spec);
-  check(fig.image.width == 120 && fig.image.height == 80, "figures: a spec drawn at its size");
+  check(fig.image.width == 240 && fig.image.height == 160, "figures: a spec drawn at its size");
 
   std::printf("splinefig %s: %d failure(s)\n", SPLINEFIG_VERSION, failures);
   return failures == 0 ? 0 : 1;
