@@ -14,13 +14,14 @@ default, splinefig.matplotlib.THREADS = 0), or --threads N.
 import argparse
 import io
 import os
-import time
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+from overhead import best_of  # noqa: E402  (the timing rule of the benches beside this one)
 
 BACKEND = "module://splinefig.matplotlib"
 
@@ -91,15 +92,6 @@ FIGURES = [line(1000), line(100000), line(1000000), scatter_one_colour, scatter_
 def save(fig, backend):
     buf = io.BytesIO()
     fig.savefig(buf, format="png", backend=backend)
-
-
-def best_of(reps, f):
-    best = float("inf")
-    for _ in range(reps):
-        t0 = time.perf_counter()
-        f()
-        best = min(best, time.perf_counter() - t0)
-    return best
 
 
 def main():
