@@ -38,8 +38,9 @@ void check_finite(double v, const char* call, const char* name) {
 void check_points(std::span<const Vec2> pts, const char* call, const char* name) {
   // One pass without branches (|v| <= limit is false for NaN and infinities too); the point to
   // blame is looked for only when there is one.
-  bool all_ok = true;
-  for (const Vec2& p : pts) all_ok &= (std::abs(p.x) <= kMaxCoordinate) & (std::abs(p.y) <= kMaxCoordinate);
+  unsigned all_ok = 1;
+  for (const Vec2& p : pts)
+    all_ok &= unsigned(std::abs(p.x) <= kMaxCoordinate) & unsigned(std::abs(p.y) <= kMaxCoordinate);
   if (all_ok) return;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (!std::isfinite(pts[i].x) || !std::isfinite(pts[i].y))

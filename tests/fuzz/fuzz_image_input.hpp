@@ -42,9 +42,13 @@ inline std::string image_file(const char* tag, const std::uint8_t* data, std::si
 // An UnreadableImage message must be one line, and a PNG decoding error must have been caught
 // by the reader's own check (png_check.cpp) before libpng met it: libpng also prints its errors
 // on stderr, a second line besides the message ("PNG read error" is OpenImageIO's wording of one).
+// Only a file with the PNG signature (named .png above) reaches libpng's decoder; in any other
+// file's message those words can only be quoted from the file, as in an OpenEXR attribute name.
 inline const char* bad_message(const std::string& m) {
   if (m.find('\n') != std::string::npos) return "a message of more than one line";
-  if (m.find("PNG read error") != std::string::npos || m.find("PNG library error") != std::string::npos)
+  const std::size_t colon = m.find(": ");
+  const bool png_file = colon != std::string::npos && colon >= 4 && m.compare(colon - 4, 4, ".png") == 0;
+  if (png_file && (m.find("PNG read error") != std::string::npos || m.find("PNG library error") != std::string::npos))
     return "a libpng error that the PNG check let through";
   return nullptr;
 }
