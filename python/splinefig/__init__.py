@@ -774,6 +774,7 @@ def _comparable(value: Any, name: str, linear: bool):
     return _image(value, name), False, name
 
 
+_FLOAT_MAX = float(np.finfo(np.float32).max)
 _COMPARE_DEFAULTS = dict(fail=1e-6, warn=1e-6, failpercent=0.0, warnpercent=0.0, hardfail=math.inf,
                          hardwarn=math.inf, allowfailures=0, linear=False, ignore_alpha=False, shift=0,
                          ssim=None, flip=None, perceptual=False, threads=0)
@@ -796,10 +797,14 @@ def compare(a: Any, b: Any, *, mask: Any = None, **options: Any) -> dict:
         if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
             raise TypeError(f"{k}: expected a number, got {type(v).__name__}")
         v = float(v)
-        if math.isnan(v) or v < 0 or (math.isinf(v) and not k.startswith("hard")):
-            raise ValueError(f"{k}: must be a {'' if k.startswith('hard') else 'finite '}number >= 0, got {v}")
-        if k.endswith("percent") and v > 100:
-            raise ValueError(f"{k}: must be a percentage in [0, 100], got {v}")
+        if k.endswith("percent"):
+            if not 0 <= v <= 100:
+                raise ValueError(f"{k}: must be a percentage in [0, 100], got {v:g}")
+        elif not (0 <= v <= _FLOAT_MAX or (v == math.inf and k.startswith("hard"))):
+            # The thresholds are floats, as on the command line (`splinefig diff --fail`): a value
+            # past the largest float would be compared as inf, which no value can exceed.
+            none = ", or inf for none" if k.startswith("hard") else ""
+            raise ValueError(f"{k}: must be a number in [0, 3.4028235e+38] (a float){none}, got {v:g}")
         o[k] = v
     o["allowfailures"] = _int(o["allowfailures"], "allowfailures", 0)
     o["shift"] = _int(o["shift"], "shift", 0, 64)

@@ -90,6 +90,10 @@ CASES = [
     (lambda: splinefig.image_buffer(65536, 65536, 1), ValueError, r"over the limit"),
     (lambda: splinefig.compare(IMG, "/nonexistent.png"), OSError, r"nonexistent"),
     (lambda: splinefig.compare(IMG, IMG, fail=-1), ValueError, r"fail: "),
+    # Past the largest float, as `splinefig diff --fail 1e39` refuses it; inf only for the hard limits.
+    (lambda: splinefig.compare(IMG, IMG, fail=1e39), ValueError, r"fail: must be a number in \[0, 3.4028235e\+38\] \(a float\), got 1e\+39"),
+    (lambda: splinefig.compare(IMG, IMG, warn=math.inf), ValueError, r"warn: must be a number in "),
+    (lambda: splinefig.compare(IMG, IMG, hardwarn=-1e300), ValueError, r"hardwarn: .*, or inf for none, got -1e\+300"),
     (lambda: splinefig.compare(IMG, IMG, failpercent=101), ValueError, r"failpercent: "),
     (lambda: splinefig.compare(IMG, IMG, shift=65), ValueError, r"shift: 65"),
     (lambda: splinefig.compare(IMG, IMG, ssim=2), ValueError, r"ssim: "),
