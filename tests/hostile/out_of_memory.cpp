@@ -51,3 +51,48 @@ TEST_CASE("render out of memory is one line naming the spec and its canvas, not 
   CHECK_FALSE(fs::exists(dir / "bias.png"));
   fs::remove_all(dir);
 }
+
+// Loading the image I/O module (OpenImageIO and its dependencies) under an address-space or
+// data limit that maps its libraries but not the threads their initialisers start died by
+// SIGSEGV or abort ("terminate called without an active exception"), with nothing to catch:
+// figures --format exr did so under ulimit -v 400000 to 440000 and ulimit -d 60000 to 100000.
+// Across and beyond that window every run either writes its figure or refuses in one line
+// and writes nothing.
+TEST_CASE("loading the image I/O module under a memory limit is one line or success, never a signal") {
+#if defined(__SANITIZE_ADDRESS__)
+  splinefig::testing_support::skip("ulimit -v cannot limit a program built with AddressSanitizer");
+  return;
+#endif
+  const fs::path dir = scratch();
+  const std::string specs = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs";
+  int refused = 0, written = 0;
+  auto run = [&](const std::string& limit) {
+    fs::remove_all(dir / "out");
+    const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && " + limit + " && timeout -s KILL " +
+                            std::to_string(kTimeLimit) + " " + splinefig::test::shell_quote(SPLINEFIG_EXE) +
+                            " figures --specs " + splinefig::test::shell_quote(specs) +
+                            " --out out --only bias --format exr --threads 1 > out.txt 2> err.txt";
+    const int status = std::system(cmd.c_str());
+    const std::string err = splinefig::test::slurp(dir / "err.txt");
+    INFO(limit << ": " << err);
+    REQUIRE(WIFEXITED(status));
+    if (WEXITSTATUS(status) == 0) {
+      ++written;
+      CHECK(fs::exists(dir / "out" / "bias.exr"));
+      return;
+    }
+    ++refused;
+    CHECK(WEXITSTATUS(status) == 2);
+    CHECK_FALSE(fs::exists(dir / "out" / "bias.exr"));
+    // The figure's line and the batch's count, nothing from a library.
+    const std::string first = err.substr(0, err.find('\n') + 1);
+    CHECK(first.rfind("splinefig figures: " + specs + "/bias.toml: ", 0) == 0);
+    CHECK(err.substr(first.size()) == "splinefig figures: 1 of 1 figures failed\n");
+  };
+  for (int kb = 300000; kb <= 640000; kb += 20000) run("ulimit -v " + std::to_string(kb));
+  for (int kb = 40000; kb <= 200000; kb += 10000) run("ulimit -d " + std::to_string(kb));
+  // The sweeps reach both sides: refusals under the tightest limits, the figure under the loosest.
+  CHECK(refused > 0);
+  CHECK(written > 0);
+  fs::remove_all(dir);
+}
