@@ -15,6 +15,7 @@
 #include <new>
 #include <string>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace {
@@ -161,6 +162,24 @@ bool encode(const char* format, const CodecImage& im, std::vector<unsigned char>
 
 constexpr ImageCodec codec{splinefig::detail::image_codec_abi, open_input, read_pixels, close_input, encode};
 
+// Under an address-space or data limit (ulimit -v, ulimit -d), OpenEXR compresses and
+// decompresses on the calling thread: in its worker threads an allocation that the limit
+// refuses ended in SIGSEGV (copyFromFrameBuffer on a buffer that was never allocated) where
+// on the calling thread it is an error OpenImageIO reports. The bytes written are the same.
+void single_threaded_under_a_limit() {
+  rlimit as{}, data{};
+  const bool limited = (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) ||
+                       (getrlimit(RLIMIT_DATA, &data) == 0 && data.rlim_cur != RLIM_INFINITY);
+  if (limited) {
+    OIIO::attribute("exr_threads", -1);  // -1: OpenEXR without worker threads
+    OIIO::attribute("threads", 1);
+  }
+}
+
 }  // namespace
 
-extern "C" __attribute__((visibility("default"))) const ImageCodec* splinefig_image_codec_v1() { return &codec; }
+extern "C" __attribute__((visibility("default"))) const ImageCodec* splinefig_image_codec_v1() {
+  static const bool once = (single_threaded_under_a_limit(), true);
+  (void)once;
+  return &codec;
+}

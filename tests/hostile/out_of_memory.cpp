@@ -96,3 +96,30 @@ TEST_CASE("loading the image I/O module under a memory limit is one line or succ
   CHECK(written > 0);
   fs::remove_all(dir);
 }
+
+// Writing EXRs under a limit once the module is loaded: OpenEXR's worker threads died by
+// SIGSEGV in copyFromFrameBuffer when the limit refused their buffers (2 runs in 6 under
+// ulimit -v 540000 at --scale 3). Every run ends in an exit status, with splinefig's lines only.
+TEST_CASE("writing EXRs under an address-space limit ends in an exit status, never a signal") {
+#if defined(__SANITIZE_ADDRESS__)
+  splinefig::testing_support::skip("ulimit -v cannot limit a program built with AddressSanitizer");
+  return;
+#endif
+  const fs::path dir = scratch();
+  const std::string specs = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs";
+  for (int kb = 500000; kb <= 900000; kb += 40000) {
+    fs::remove_all(dir / "out");
+    const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && ulimit -v " + std::to_string(kb) +
+                            " && timeout -s KILL " + std::to_string(kTimeLimit) + " " +
+                            splinefig::test::shell_quote(SPLINEFIG_EXE) + " figures --specs " +
+                            splinefig::test::shell_quote(specs) +
+                            " --out out --only bias,filter-zoneplate --format png,exr --scale 3 > out.txt 2> err.txt";
+    const int status = std::system(cmd.c_str());
+    const std::string err = splinefig::test::slurp(dir / "err.txt");
+    INFO("ulimit -v " << kb << ": " << err);
+    REQUIRE(WIFEXITED(status));
+    CHECK((WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 2));
+    for (std::size_t at = 0; at < err.size(); at = err.find('\n', at) + 1) CHECK(err.compare(at, 19, "splinefig figures: ") == 0);
+  }
+  fs::remove_all(dir);
+}
