@@ -256,8 +256,9 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   ax.dash_cycle = r.boolean("dash_cycle", ax.dash_cycle);
   if (r.has("cell")) {
     auto v = r.numbers("cell");
-    if (v.size() != 2 || v[0] < 0 || v[1] < 0 || v[0] != static_cast<int>(v[0]) || v[1] != static_cast<int>(v[1]))
-      r.fail("cell", "expected [row, col], non-negative integers");
+    // Range first: converting a number past an int (1e10) to int is undefined.
+    auto index = [](double x) { return x >= 0 && x < 1e6 && x == std::floor(x); };
+    if (v.size() != 2 || !index(v[0]) || !index(v[1])) r.fail("cell", "expected [row, col], non-negative integers");
     ax.cell = std::array<int, 2>{static_cast<int>(v[0]), static_cast<int>(v[1])};
   }
   if (r.has("box")) {

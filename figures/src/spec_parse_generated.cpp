@@ -6,6 +6,7 @@
 #include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace splinefig::figures::detail {
 namespace {
@@ -193,7 +194,12 @@ ZoneplateElement parse_zoneplate(TableReader& r) {
   if (r.has("crop")) {
     auto v = r.numbers("crop");
     if (v.size() != 4) r.fail("crop", "expected [x, y, width, height] in output pixels");
-    for (size_t i = 0; i < 4; ++i) e.crop[i] = static_cast<int>(v[i]);
+    // In range before the conversion: a number past an int (3.4e10) converted to int is undefined.
+    for (size_t i = 0; i < 4; ++i) {
+      if (!(v[i] >= 0 && v[i] <= e.size && v[i] == std::floor(v[i])))
+        r.fail("crop", "must be whole output pixels inside the " + std::to_string(e.size) + "x" + std::to_string(e.size) + " output");
+      e.crop[i] = static_cast<int>(v[i]);
+    }
     const auto& c = e.crop;
     if (c[0] < 0 || c[1] < 0 || c[2] < 1 || c[3] < 1 || c[0] + c[2] > e.size || c[1] + c[3] > e.size)
       r.fail("crop", "must lie inside the " + std::to_string(e.size) + "x" + std::to_string(e.size) + " output");

@@ -176,3 +176,19 @@ TEST_CASE("a command whose standard output cannot be written says so and fails, 
       CHECK(splinefig::test::count_lines(err) == 1);
     }
 }
+
+// Numbers read as pixel counts or grid indices are checked before they are converted to int:
+// a zoneplate crop of 3.4e10 (a fuzzer's input) converted out of range, which is undefined
+// (UBSan: "outside the range of representable values of type 'int'"), and so did a cell of 1e10.
+TEST_CASE("a zone plate crop or an axes cell past an int is refused naming the key") {
+  const std::string zp = "[[axes]]\nbox = [0, 0, 100, 100]\n[[axes.zoneplate]]\nfilter = \"catmull-rom\"\nsize = 512\n";
+  check_refused("crop_huge", zp + "crop = [0, 0, 3.43597e10, 1]\n",
+                "crop_huge.toml:6: axes[0].zoneplate[0].crop: must be whole output pixels inside the 512x512 output");
+  check_refused("crop_fraction", zp + "crop = [0.5, 0, 256, 256]\n",
+                "crop_fraction.toml:6: axes[0].zoneplate[0].crop: must be whole output pixels inside the 512x512 output");
+  check_refused("crop_outside", zp + "crop = [300, 0, 256, 256]\n",
+                "crop_outside.toml:6: axes[0].zoneplate[0].crop: must lie inside the 512x512 output");
+  check_refused("cell_huge", "[[axes]]\ncell = [1e10, 0]\n", "cell_huge.toml:2: axes[0].cell: expected [row, col], non-negative integers");
+  check_refused("cell_fraction", "[[axes]]\ncell = [0, 0.5]\n",
+                "cell_fraction.toml:2: axes[0].cell: expected [row, col], non-negative integers");
+}
