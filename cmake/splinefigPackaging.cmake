@@ -27,10 +27,10 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 # its text is drawn with.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# What building against the libraries needs (their CMake package finds these), and the
-# test matchers' frameworks.
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
-  "libopenimageio-dev, zlib1g-dev, libpng-dev, libtomlplusplus-dev, nlohmann-json3-dev, python3-imath")
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS "catch2, libgtest-dev, libgmock-dev, pkg-config")
+# What building against the libraries needs (their CMake package and splinefig.pc require
+# these: SPLINEFIG_DEV_PACKAGES, beside SPLINEFIG_PC_REQUIRES), and the test matchers'
+# frameworks. Recommended, not required: the command alone needs none of them.
+list(JOIN SPLINEFIG_DEV_PACKAGES ", " CPACK_DEBIAN_PACKAGE_RECOMMENDS)
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "catch2, libgtest-dev, libgmock-dev")
 set(CPACK_STRIP_FILES ON)
 include(CPack)

@@ -1,6 +1,7 @@
 # `cpack -G DEB` builds the package; unpacked into a temporary root (dpkg -x), its command
 # draws a built-in figure from the package's own specs, and a consumer project builds against
 # the package's CMake config and runs. Reports skipped (SPLINEFIG-SKIPPED) without dpkg-dev.
+cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...) in script mode
 find_program(DPKG_DEB dpkg-deb)
 find_program(DPKG_SHLIBDEPS dpkg-shlibdeps)
 if(NOT DPKG_DEB OR NOT DPKG_SHLIBDEPS)
@@ -44,6 +45,40 @@ foreach(path usr/bin/splinefig usr/include/splinefig/figures/figure.hpp usr/incl
     message(FATAL_ERROR "the package has no /${path}")
   endif()
 endforeach()
+# What building against it needs is recommended: the Debian package that holds each module of
+# the installed splinefig.pc's Requires in the package (pkg-config's file for it, owned by the package in
+# dpkg's database), and the one holding pkg-config, which the CMake package calls.
+execute_process(COMMAND ${DPKG_DEB} -f ${debs} Recommends RESULT_VARIABLE rc OUTPUT_VARIABLE recommends)
+string(REGEX REPLACE "^Recommends: " "" recommends "${recommends}")
+string(REGEX REPLACE "[ \n]" "" recommends "${recommends}")
+string(REPLACE "," ";" recommends "${recommends}")
+find_program(PKG_CONFIG_EXE pkg-config)
+find_program(DPKG_QUERY dpkg-query)
+if(PKG_CONFIG_EXE AND DPKG_QUERY)
+  file(STRINGS ${root}/usr/lib/pkgconfig/splinefig.pc requires_line REGEX "^Requires:")
+  string(REGEX REPLACE "^Requires: *" "" requires "${requires_line}")
+  string(REPLACE " " ";" requires "${requires}")
+  set(owned)
+  foreach(module IN LISTS requires)
+    execute_process(COMMAND ${PKG_CONFIG_EXE} --path ${module} RESULT_VARIABLE rc OUTPUT_VARIABLE pc OUTPUT_STRIP_TRAILING_WHITESPACE)
+    if(rc)
+      message(FATAL_ERROR "pkg-config finds no ${module}, which splinefig.pc requires")
+    endif()
+    list(APPEND owned ${pc})
+  endforeach()
+  list(APPEND owned ${PKG_CONFIG_EXE})
+  foreach(file IN LISTS owned)
+    execute_process(COMMAND ${DPKG_QUERY} -S ${file} RESULT_VARIABLE rc OUTPUT_VARIABLE owner ERROR_QUIET)
+    if(rc)
+      message(FATAL_ERROR "no Debian package owns ${file} (dpkg-query -S)")
+    endif()
+    string(REGEX REPLACE "^([^:,]+).*" "\\1" owner "${owner}")
+    if(NOT owner IN_LIST recommends)
+      message(FATAL_ERROR "the package does not recommend ${owner}, which holds ${file}: Recommends ${recommends}")
+    endif()
+  endforeach()
+endif()
+
 file(GLOB libs ${root}/usr/lib/libsplinefig_*.a)
 list(LENGTH libs count)
 if(count LESS 7)
