@@ -17,6 +17,24 @@
 #include <sstream>
 
 namespace splinefig::figures {
+
+SpecFileError::SpecFileError(const std::string& message) : std::runtime_error([&] {
+  static constexpr char hex[] = "0123456789abcdef";
+  std::string line;
+  line.reserve(message.size());
+  for (const char ch : message) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f) {
+      line += "\\x";
+      line += hex[c >> 4];
+      line += hex[c & 15];
+    } else {
+      line += ch;
+    }
+  }
+  return line;
+}()) {}
+
 namespace detail {
 
 Basis checked_basis(TableReader& r, std::string_view key, const std::string& spec) {

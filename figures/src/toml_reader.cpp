@@ -330,7 +330,7 @@ int TableReader::choice(std::string_view key, const std::vector<std::string>& ch
     if (*s == choices[i]) return static_cast<int>(i);
   std::string list;
   for (const auto& c : choices) list += (list.empty() ? "" : " | ") + c;
-  fail(key, "unknown value \"" + *s + "\" (expected " + list + ")");
+  fail(key, "unknown value " + excerpt(*s) + " (expected " + list + ")");
 }
 
 static std::optional<Color> hex(const std::string& s) { return render::parse_hex_color(s); }
@@ -339,7 +339,7 @@ std::optional<Color> TableReader::opt_color(std::string_view key) {
   auto s = opt_string(key);
   if (!s) return std::nullopt;
   auto c = hex(*s);
-  if (!c) fail(key, "\"" + *s + "\" is not a hex colour \"#rrggbb\" or \"#rrggbbaa\"");
+  if (!c) fail(key, excerpt(*s) + " is not a hex colour \"#rrggbb\" or \"#rrggbbaa\"");
   return c;
 }
 
@@ -349,7 +349,7 @@ std::vector<Color> TableReader::colors(std::string_view key) {
   std::vector<Color> out;
   for (const std::string& s : strings(key)) {
     auto c = hex(s);
-    if (!c) fail(key, "\"" + s + "\" is not a hex colour \"#rrggbb\" or \"#rrggbbaa\"");
+    if (!c) fail(key, excerpt(s) + " is not a hex colour \"#rrggbb\" or \"#rrggbbaa\"");
     out.push_back(*c);
   }
   return out;

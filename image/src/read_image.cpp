@@ -90,6 +90,12 @@ std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spe
     unreadable(path, "image too large (" + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                          " pixels, limit 65536 a side)");
   if (std::string problem = detail::origin_problem(spec.x, spec.y); !problem.empty()) unreadable(path, problem);
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (!ec && values > std::uint64_t(bytes) * kMaxImageValuesPerByte)
+    unreadable(path, "the header declares " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
+                         std::to_string(spec.channels) + " values, more than a file of " + std::to_string(bytes) +
+                         " bytes can hold (truncated or corrupt)");
   return values;
 }
 

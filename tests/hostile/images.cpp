@@ -130,6 +130,32 @@ TEST_CASE("an image wider or taller than 65536 px is refused from its header") {
   CHECK_THROWS_WITH(splinefig::read_image(path), Catch::Contains("limit 65536 a side"));
 }
 
+// Found by fuzz_resample: a 21-byte file that OpenImageIO reads as a TGA header declaring
+// 10240 x 25953 RGB pixels (within the pixel and value limits): 3.2 GB of floats were
+// allocated before the read found no pixel data.
+TEST_CASE("an image declaring more values than its file could hold is refused before it is allocated") {
+  const fs::path dir = scratch();
+  // An uncompressed true-colour TGA header (18 bytes): type 2, 10240 x 25953, 24 bits.
+  std::string tga(18, '\0');
+  tga[2] = 2;
+  tga[12] = char(10240 & 255), tga[13] = char(10240 >> 8);
+  tga[14] = char(25953 & 255), tga[15] = char(25953 >> 8);
+  tga[16] = 24;
+  write_file(dir / "short.tga", tga + "abc");
+  const std::string says = "short.tga: the header declares 10240 x 25953 x 3 values, more than a file of 21 bytes can hold";
+  CHECK_THROWS_WITH(splinefig::read_image((dir / "short.tga").string()), Catch::Contains(says));
+  CHECK_THROWS_WITH(splinefig::check_image_header((dir / "short.tga").string()), Catch::Contains(says));
+  check_unreadable({"resample", "short.tga", "-o", "out.png", "--filter", "bspline", "--size", "8x8"}, dir, 2, says);
+  // A complete file compressing 1000:1 (deflate's best on zeros) is read.
+  write_file(dir / "zeros.png", zero_png(2000, 2000, 2000));
+  INFO(fs::file_size(dir / "zeros.png") << " bytes");
+  CHECK(4000000 > fs::file_size(dir / "zeros.png") * 900);
+  const splinefig::Image zeros = splinefig::read_image((dir / "zeros.png").string());
+  CHECK(zeros.width == 2000);
+  CHECK(zeros.pixels.size() == 4000000);
+  fs::remove_all(dir);
+}
+
 namespace {
 
 // zero_png with an oFFs chunk (pixel units) placing its data window at (x, y).

@@ -139,6 +139,19 @@ TEST_CASE("a markup error quotes a short escaped excerpt of the label, not all o
   fs::remove_all(dir);
 }
 
+TEST_CASE("a value, a file name or a data name the spec repeats in an error keeps the error on one line") {
+  const fs::path dir = scratch();
+  // TOML's \n and \u001b escapes put a newline and an ESC into the strings.
+  check_one_line(render_spec(dir, "legend", "[axes]\nx_range = [0, 1]\ny_range = [0, 1]\nlegend = \"upper\\nleft\"\n"), 2,
+                 "splinefig render: legend.toml:4: axes.legend: unknown value \"upper\\x0aleft\" (expected auto | none | upper left | "
+                 "upper right | lower left | lower right | upper center | lower center | outside right | outside-right)");
+  check_one_line(render_spec(dir, "file", "[axes]\n[[axes.series]]\npoints_file = \"no\\nsuch\\u001b.csv\"\n"), 2,
+                 "splinefig render: file.toml:3: axes.series[0].points_file: no such data file \"./no\\x0asuch\\x1b.csv\"");
+  check_one_line(render_spec(dir, "named", "[axes]\n[[axes.series]]\npoints = \"a\\r\\nb\"\n"), 2,
+                 "splinefig render: named.toml:3: axes.series[0].points: no data named \"a\\x0d\\x0ab\" (the spec has no [data] table)");
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a basis spec's parameters are quoted at most 40 bytes long, in flags and in specs") {
   const fs::path dir = scratch();
   const std::string ones(10000, '1');

@@ -45,6 +45,11 @@ inline constexpr std::uint64_t kMaxImageValues = std::uint64_t(1) << 30;
 inline constexpr std::uint64_t kMaxImagePixels = std::uint64_t(1) << 28;
 inline constexpr std::uint64_t kMaxImageSide = std::uint64_t(1) << 16;
 inline constexpr std::int64_t kMaxImageOrigin = std::int64_t(1) << 30;
+// Values a file may declare per byte it holds: no codec packs more than 2^14 values in a byte
+// (deflate's 1032:1 on a 1-bit PNG or TIFF expanded to a grey float is about 8256; an LZW GIF
+// expanded to RGB about 4100; RLE formats 64 to 128), so a 21-byte TGA header declaring
+// 10240 x 25953 x 3 values (3.2 GB of floats) is refused before anything is allocated.
+inline constexpr std::uint64_t kMaxImageValuesPerByte = std::uint64_t(1) << 14;
 
 // Figure specs, checked where they are loaded, before any work.
 inline constexpr std::size_t kMaxSpecBytes = std::size_t(1) << 26;  // a spec file: 64 MiB, held whole

@@ -25,9 +25,12 @@ namespace splinefig::figures {
 using render::Color;
 using render::Vec2;
 
-// A bad spec: the message is one line, "FILE:LINE: KEY: what is wrong".
+// A bad spec: the message is one line, "FILE:LINE: KEY: what is wrong". Whatever a message
+// repeats from the spec (a value, a key, a label), a control character in it (a newline, an
+// ESC) is written as \xNN, so that no message spans lines or drives a terminal; UTF-8 stays.
 struct SpecFileError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit SpecFileError(const std::string& message);
+  explicit SpecFileError(const char* message) : SpecFileError(std::string(message)) {}
 };
 
 // The limits a spec is checked against (canvas, marks, key parts, ...) are in base/limits.hpp.
