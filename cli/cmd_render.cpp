@@ -118,7 +118,7 @@ const splinefig::cli::Registration reg{
           w.dpi = dpi;
           w.threads = threads;
           w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
-          w.title = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
+          w.title = fig::file_title(spec);
           w.date = fig::source_date_epoch();
           std::optional<splinefig::Image> raster;
           try {

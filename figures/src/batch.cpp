@@ -65,7 +65,7 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     w.dpi = o.dpi;
     w.threads = raster_threads;
     w.software = o.software;
-    w.title = spec.title.empty() ? spec.name : spec.name + ": " + spec.title;
+    w.title = file_title(spec);
     w.date = o.date;
     std::optional<Image> raster;
     for (const auto& format : o.formats) {

@@ -35,8 +35,10 @@ const char* extension(Format format) {
   return "";
 }
 
-void write_figure_file(const FigureScene& fig, const std::string& path, Format format, const FigureFileOptions& o,
-                       std::optional<Image>& raster) {
+namespace {
+
+// The dpi and scale checks of write_figure_file.
+void check_dpi(Format format, const FigureFileOptions& o) {
   if (o.dpi != 0 && !(o.dpi >= kMinDpi && o.dpi <= kMaxDpi)) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "dpi %g is outside [%g, %g]", o.dpi, kMinDpi, kMaxDpi);
@@ -51,12 +53,31 @@ void write_figure_file(const FigureScene& fig, const std::string& path, Format f
                   o.dpi > 0 ? o.dpi : 96.0, o.scale, file_dpi, kMinDpi, kMaxDpi);
     throw std::invalid_argument(buf);
   }
+}
+
+vector::Options vector_options(const FigureFileOptions& o) {
+  vector::Options v;
+  v.dpi = (o.dpi > 0 ? o.dpi : 96.0) * o.scale;
+  v.title = o.title;
+  v.creator = o.software;
+  v.date = o.date;
+  return v;
+}
+
+}  // namespace
+
+std::string figure_svg(const FigureScene& fig, const FigureFileOptions& o) {
+  check_dpi(Format::svg, o);
+  return vector::to_svg(fig.scene, vector_options(o));
+}
+
+std::string file_title(const FigureSpec& spec) { return spec.title.empty() ? spec.name : spec.name + ": " + spec.title; }
+
+void write_figure_file(const FigureScene& fig, const std::string& path, Format format, const FigureFileOptions& o,
+                       std::optional<Image>& raster) {
+  check_dpi(format, o);
   if (format == Format::svg || format == Format::pdf) {
-    vector::Options v;
-    v.dpi = (o.dpi > 0 ? o.dpi : 96.0) * o.scale;
-    v.title = o.title;
-    v.creator = o.software;
-    v.date = o.date;
+    const vector::Options v = vector_options(o);
     vector::write_vector(path, fig.scene, format == Format::svg ? vector::VectorFormat::svg : vector::VectorFormat::pdf, v);
     return;
   }

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import os
 import threading
-from typing import Any, Optional, Sequence, Union
+from typing import Any, Callable, Optional, Sequence, Union
 
 import numpy as np
 
@@ -36,7 +36,12 @@ class Image(np.ndarray):
     numpy float32 array in every respect, which also knows whether its values are linear light
     or sRGB-encoded (`encoding`), and so shows itself in a notebook (IPython, Jupyter): its
     _repr_png_ is the PNG that write_image writes (8-bit sRGB, straight alpha). An array that
-    is not an image of 1 to 4 channels (a slice, a reduction) shows as an array."""
+    is not an image of 1 to 4 channels (a slice, a reduction) shows as an array. A figure from
+    render_spec or render_figure also shows as SVG (_repr_svg_: the file `splinefig render -o
+    FIG.svg` writes, drawn from the same spec when it is asked for), so a notebook may show
+    its exact vector form; any array computed from it has none."""
+
+    _svg_source: Optional[Callable[[], str]] = None
 
     def __new__(cls, array: Any, encoding: str = "linear") -> "Image":
         obj = np.asarray(array).view(cls)
@@ -45,6 +50,15 @@ class Image(np.ndarray):
 
     def __array_finalize__(self, obj: Any) -> None:
         self.encoding = getattr(obj, "encoding", "linear")
+        self._svg_source = None  # a slice, a copy or arithmetic is no longer the figure
+
+    def _repr_svg_(self) -> Optional[str]:
+        if self._svg_source is None:
+            return None
+        try:
+            return self._svg_source()
+        except ValueError:  # the spec or a file it reads changed since: the PNG still shows
+            return None
 
     def _repr_png_(self) -> Optional[bytes]:
         channels = 1 if self.ndim == 2 else (self.shape[2] if self.ndim == 3 else 0)
@@ -675,8 +689,16 @@ def render_spec(spec: Any, *, scale: float = 1.0, threads: int = 0, text: Option
     t = _int(threads, "threads", 0, 256)
     if text is not None:
         name = _str(spec, "spec") if spec is not None else "<text>"
-        return Image(_core.render_spec_text(_str(text, "text"), name, ".", s, t))
-    return Image(_core.render_spec_file(_path(spec, "spec"), s, t))
+        source = _str(text, "text")
+        image = Image(_core.render_spec_text(source, name, ".", s, t))
+        here = os.getcwd()  # where its relative files were read from
+        image._svg_source = lambda: _core.spec_svg_text(source, name, here, s)
+        return image
+    path = _path(spec, "spec")
+    image = Image(_core.render_spec_file(path, s, t))
+    where = os.path.abspath(path)
+    image._svg_source = lambda: _core.spec_svg_file(where, s)
+    return image
 
 
 def render_figure(name: str, *, scale: float = 1.0, threads: int = 0) -> np.ndarray:

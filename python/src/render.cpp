@@ -3,6 +3,7 @@
 #include "modules.hpp"
 
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/figures/output.hpp>
 #include <splinefig/figures/spec.hpp>
 #include <splinefig/image/srgb.hpp>
 #include <splinefig/renderer/path.hpp>
@@ -152,6 +153,16 @@ py::array figure_array(const figures::FigureSpec& spec, double scale, int thread
   return array_from_image(std::move(im));
 }
 
+// The figure as `splinefig render -o FIG.svg --scale SCALE` writes it.
+std::string figure_svg_text(const figures::FigureSpec& spec, double scale) {
+  figures::check_scaled_canvas(spec, scale, "scale");
+  figures::FigureFileOptions o;
+  o.scale = scale;
+  o.title = figures::file_title(spec);
+  py::gil_scoped_release unlocked;
+  return figures::figure_svg(figures::figure_scene(spec, scale), o);
+}
+
 template <class F>
 auto spec_errors(F&& f) {
   try {
@@ -287,6 +298,12 @@ void bind_render(py::module_& m) {
   });
   m.def("render_spec_text", [](const std::string& text, const std::string& name, const std::string& base_dir, double scale, int threads) {
     return spec_errors([&] { return figure_array(figures::parse_spec(text, name, base_dir), scale, threads); });
+  });
+  m.def("spec_svg_file", [](const std::string& path, double scale) {
+    return spec_errors([&] { return figure_svg_text(figures::load_spec(path), scale); });
+  });
+  m.def("spec_svg_text", [](const std::string& text, const std::string& name, const std::string& base_dir, double scale) {
+    return spec_errors([&] { return figure_svg_text(figures::parse_spec(text, name, base_dir), scale); });
   });
 }
 

@@ -1,6 +1,7 @@
 """Notebook display: the images the module returns show themselves (IPython's _repr_png_), as
 the PNG write_image writes. The PNG bytes are decoded here by a reader of their own (zlib and the
 PNG filters, from the PNG specification), not by the module."""
+import re
 import struct
 import zlib
 
@@ -89,3 +90,44 @@ def test_what_is_not_an_image_shows_as_an_array():
     assert img[0, 0]._repr_png_() is None
     assert img[:, :, :0]._repr_png_() is None
     assert img.sum(axis=(0, 1))._repr_png_() is None
+
+
+RED = "[canvas]\nwidth = 7\nheight = 4\nbackground = \"#ff0000\"\n"
+
+
+def test_a_figure_shows_as_the_svg_render_writes(tmp_path, cli, monkeypatch):
+    import xml.etree.ElementTree as ET
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "red.toml").write_text(RED)
+    cli(["render", "red.toml", "-o", "red.svg", "--scale", "2"])
+    img = splinefig.render_spec("red.toml", scale=2)
+    svg = img._repr_svg_()
+    assert svg == (tmp_path / "red.svg").read_text()
+    root = ET.fromstring(svg)
+    # 7 x 4 CSS px at any scale; the scaled canvas is the view box.
+    assert (root.get("width"), root.get("height"), root.get("viewBox")) == ("7", "4", "0 0 14 8")
+    assert root.find("{http://www.w3.org/2000/svg}rect").get("fill") == "#ff0000"
+    # Moved away from the directory it was rendered in, the figure still shows.
+    monkeypatch.chdir("/")
+    assert img._repr_svg_() == svg
+
+
+def test_a_spec_given_as_text_and_a_built_in_figure_show_as_svg():
+    svg = splinefig.render_spec("red", text=RED)._repr_svg_()
+    assert svg.startswith("<?xml") and "<title>red</title>" in svg
+    bias = splinefig.render_figure("bias")._repr_svg_()
+    assert re.search(r'<path d="M[^"]*C', bias)  # the curves as cubic Bezier pieces
+
+
+def test_what_is_no_longer_the_figure_has_no_svg(tmp_path):
+    spec = tmp_path / "red.toml"
+    spec.write_text(RED)
+    img = splinefig.render_spec(spec)
+    assert img[1:3]._repr_svg_() is None
+    assert (img * 0.5)._repr_svg_() is None
+    assert img.copy()._repr_svg_() is None
+    assert splinefig.Scene(4, 4).render()._repr_svg_() is None
+    # The spec has since become bad: the PNG still shows, the SVG does not.
+    spec.write_text("[canvas]\nwidth = -1\n")
+    assert img._repr_svg_() is None
+    assert img._repr_png_() is not None

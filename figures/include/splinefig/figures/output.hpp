@@ -34,6 +34,13 @@ struct FigureFileOptions {
 void write_figure_file(const FigureScene& fig, const std::string& path, Format format,
                        const FigureFileOptions& options, std::optional<Image>& raster);
 
+// The figure as the SVG text write_figure_file writes for Format::svg (the same checks of dpi
+// and scale, the same throws but UnwritableFile).
+std::string figure_svg(const FigureScene& fig, const FigureFileOptions& options);
+
+// The title a figure's files carry: "NAME: TITLE", or the spec's name when it has no title.
+std::string file_title(const FigureSpec& spec);
+
 // SOURCE_DATE_EPOCH as seconds, or -1 when it is unset or not a number.
 long long source_date_epoch();
 
