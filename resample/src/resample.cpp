@@ -17,6 +17,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
+#include <cstdio>
+#include <cmath>
 #include <limits>
 
 #if defined(__SSE__)
@@ -437,6 +440,49 @@ void vertical_first(const Plan& p, int threads) {
   });
 }
 
+bool all_finite(const ImageView& im) {
+  for (int j = 0; j < im.height; ++j) {
+    const float* r = im.row(j);
+    for (std::size_t k = 0; k < im.row_length(); ++k)
+      if (!std::isfinite(r[k])) return false;
+  }
+  return true;
+}
+
+// The largest sum of |weights| over an axis's outputs: how far a weighted sum of values of
+// magnitude m can reach (m times this), the negative lobes included.
+double largest_abs_sum(const AxisWeights& a) {
+  double most = 0;
+  for (std::size_t i = 0; i < std::size_t(a.dst); ++i) {
+    double sum = 0;
+    for (int t = 0; t < a.taps; ++t) sum += std::abs(double(a.w[i * std::size_t(a.taps) + std::size_t(t)]));
+    most = std::max(most, sum);
+  }
+  return most;
+}
+
+// Finite values large enough that a float sum of weighted taps could overflow to infinity are
+// refused: the largest finite |value| times both axes' largest sums of |weights| must stay
+// within FLT_MAX (with a margin of 2^-16 for the rounding of up to 256 partial sums, 2^-24 each).
+// Non-finite values pass through as they are.
+void check_range(const ImageView& src, const AxisWeights& ax, const AxisWeights& ay, const char* what) {
+  float peak = 0;
+  for (int j = 0; j < src.height; ++j) {
+    const float* r = src.row(j);
+    for (std::size_t k = 0; k < src.row_length(); ++k)
+      if (std::isfinite(r[k])) peak = std::max(peak, std::abs(r[k]));
+  }
+  const double gain = largest_abs_sum(ax) * largest_abs_sum(ay);
+  const double limit = double(std::numeric_limits<float>::max()) / (gain * (1 + 1.0 / 65536));
+  if (double(peak) <= limit) return;
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "resample: %s values up to %.9g would overflow a float through the filter's weights (their absolute "
+                "sums reach %.6g x %.6g); at most %.3g can be resampled",
+                what, double(peak), largest_abs_sum(ax), largest_abs_sum(ay), limit);
+  throw std::invalid_argument(buf);
+}
+
 }  // namespace
 
 void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const ResampleOptions& opt) {
@@ -456,11 +502,15 @@ void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const R
     coefficients = Image(src_in.width, src_in.height, src_in.channels);
     for (int j = 0; j < src_in.height; ++j)
       std::memcpy(coefficients.row(j), src_in.row(j), src_in.row_length() * sizeof(float));
+    const bool finite = all_finite(src_in);
     prefilter(coefficients, k, opt.edge, threads);
     src = coefficients.view();
+    if (finite && !all_finite(src))
+      throw std::invalid_argument("resample: source values this large overflow a float in the interpolating prefilter");
   }
   Plan p{src, dst, axis_weights(k, src.width, dst.width), axis_weights(k, src.height, dst.height), opt.edge, src.channels,
          kStreamingStores && dst.pixels.size() * sizeof(float) > (size_t(32) << 20), {}};
+  check_range(src, p.ax, p.ay, opt.interpolating ? "the interpolating prefilter's" : "source");
   p.split = split_row(p.ax, p.C);
   // Multiply-adds, in units of a 4-wide horizontal tap (see the top of this file).
   const double C = p.C, hx = p.ax.taps * (C <= 4 ? 1.0 : C / 4), vy = p.ay.taps * C / 8;

@@ -1,6 +1,7 @@
 // libFuzzer harness: an image file read in linear light and resampled as `splinefig resample`
 // does, up and down, with each edge mode. Any input must resample to finite values or end in
-// one UnreadableImage line (no libpng error past the PNG check); anything else is a finding.
+// one UnreadableImage line (no libpng error past the PNG check) or in one line refusing values
+// that would overflow a float; anything else is a finding.
 #include "fuzz_image_input.hpp"
 
 #include <splinefig/image/io.hpp>
@@ -33,6 +34,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           std::fprintf(stderr, "fuzz_resample: a non-finite output value from finite input\n");
           std::abort();
         }
+    }
+  } catch (const std::invalid_argument& e) {  // values that would overflow a float: resample's refusal
+    if (std::string(e.what()).find('\n') != std::string::npos) {
+      std::fprintf(stderr, "fuzz_resample: a message of more than one line: %s\n", e.what());
+      std::abort();
     }
   } catch (const UnreadableImage& e) {
     if (const char* what = fuzz::bad_message(e.what())) {
