@@ -64,12 +64,19 @@ template <class F>
 int write_rows(const Options& o, double x0, double x1, double step, const char* what, F&& f) {
   if (!(step > 0)) throw Failure("--step: " + o.step + " must be positive");
   if (x1 < x0) throw Failure("--to " + o.to + " is less than --from " + o.from);
-  const double span = (x1 - x0) / step;
+  // Near the ends of the doubles x1 - x0 and i * step can overflow where the rows cannot
+  // (--from -1.7e308 --to 1.7e308 --step 1.7e308 is 3 rows): then both are taken halved, which
+  // is exact for numbers this large.
+  const bool halve = !std::isfinite(x1 - x0) || !std::isfinite(step * max_rows);
+  const double span = halve ? (x1 / 2 - x0 / 2) / (step / 2) : (x1 - x0) / step;
   if (!(span < max_rows)) throw Failure("--step " + o.step + ": more than 1e8 rows from --from to --to");
   const long long rows = static_cast<long long>(std::floor(span * (1 + 1e-12) + 1e-9)) + 1;
   std::string text;
   text.reserve(static_cast<size_t>(rows) * 24);
-  for (long long i = 0; i < rows; ++i) append_row(text, x0 + static_cast<double>(i) * step, o, what, f);
+  for (long long i = 0; i < rows; ++i) {
+    const double n = static_cast<double>(i);
+    append_row(text, halve ? 2 * (x0 / 2 + n * (step / 2)) : x0 + n * step, o, what, f);
+  }
   cli::write_stdout(text);
   return 0;
 }

@@ -174,6 +174,17 @@ TEST_CASE("kernel rejects bad ranges and specs") {
   check_fails({"kernel", "--basis", "catmull-rom", "--step", "1e-12"}, "", "more than 1e8 rows");
   check_fails({"kernel", "--basis", "uniform-bspline:degree=0"}, "", "out of range");
   check_fails({"kernel", "--basis", "catmull-rom", "--step"}, "", "--step");
+  check_fails({"kernel", "--basis", "catmull-rom", "--from", "-1.7e308", "--to", "1.7e308", "--step", "1e300"}, "",
+              "more than 1e8 rows");
+}
+
+TEST_CASE("kernel's rows reach the ends of the doubles where to - from and i * step overflow") {
+  // 3 rows, at -1.7e308, 0 and 1.7e308 (the B-spline is 0, 2/3, 0 there); (to - from) / step
+  // overflowed to inf and the range was said to be more than 1e8 rows.
+  const auto r = run({"kernel", "--basis", "bspline", "--from", "-1.7e308", "--to", "1.7e308", "--step", "1.7e308"});
+  INFO(r.err);
+  CHECK(r.code == 0);
+  CHECK(r.out == "-1.7e+308,0\n0,0.6666666666666666\n1.7e+308,0\n");
 }
 
 TEST_CASE("An unknown subcommand is one clear line, --help works on every subcommand") {
