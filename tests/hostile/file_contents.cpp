@@ -57,3 +57,25 @@ TEST_CASE("a bad field after good points is quoted, at most 24 bytes and escaped
   CHECK(o.err == "splinefig render: data.toml:6: axes[0].series[0].points_file: pts.csv line 2, field 2: '\\x1b[2J' is not a number\n");
   fs::remove_all(dir);
 }
+
+// docs/spec.md: a spec may name a file outside its own directory, by an absolute path or
+// through "..", as any program's input may; only what it may learn or make splinefig do is
+// bounded.
+TEST_CASE("a spec reads data files outside its directory, by an absolute path or through ..") {
+  const std::string kPlot = "[canvas]\nwidth = 320\nheight = 240\n";
+  const fs::path dir = scratch();
+  fs::create_directories(dir / "specs");
+  write_file(dir / "points.csv", "0,0\n1,1\n2,0\n");
+  // From the parent directory: ".." is taken from the spec's directory, not the working one.
+  write_file(dir / "specs" / "up.toml", kPlot + "[[axes]]\n[[axes.series]]\npoints_file = \"../points.csv\"\n");
+  write_file(dir / "specs" / "absolute.toml",
+             kPlot + "[[axes]]\n[[axes.series]]\npoints_file = \"" + (dir / "points.csv").string() + "\"\n");
+  for (const std::string name : {"up", "absolute"}) {
+    const Outcome o = run_in(dir, {"render", "specs/" + name + ".toml", "-o", name + ".png"});
+    INFO(name << ": " << o.err);
+    CHECK(o.code == 0);
+    CHECK(o.err.empty());
+    CHECK(fs::exists(dir / (name + ".png")));
+  }
+  fs::remove_all(dir);
+}
