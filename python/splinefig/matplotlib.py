@@ -25,6 +25,7 @@ import matplotlib as mpl
 from matplotlib import cbook
 from matplotlib.backend_bases import (FigureCanvasBase, FigureManagerBase, RendererBase, _Backend)
 from matplotlib.path import Path
+from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
 
 from . import Scene, _core
@@ -65,6 +66,55 @@ def _blend_of(value: Optional[str]) -> str:
 
 _HINTING_FACTOR = 8  # matplotlib's default text.hinting_factor
 
+_TEXT_RC = tuple(k for k in dict.keys(mpl.rcParams) if k.startswith(("font.", "mathtext.")))
+
+
+class _CachedTextToPath(TextToPath):
+    """TextToPath whose outlines are kept: a figure draws the same tick labels at every save.
+    The key is the string, the font properties and every font and mathtext setting (TeX is not
+    kept). One instance serves every renderer, so its mathtext parser's own cache is kept too."""
+
+    _SIZE = 2048
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._paths: dict = {}
+
+    @staticmethod
+    def key(prop, s, ismath) -> tuple:
+        rc = tuple(tuple(v) if isinstance(v, list) else v for v in (dict.get(mpl.rcParams, k) for k in _TEXT_RC))
+        return (s, bool(ismath), tuple(prop.get_family()), prop.get_style(), prop.get_variant(), prop.get_weight(),
+                prop.get_stretch(), prop.get_size_in_points(), prop.get_file(), prop.get_math_fontfamily(), rc)
+
+    def kept(self, key, make):
+        got = self._paths.get(key)
+        if got is None:
+            got = make()
+            if len(self._paths) >= self._SIZE:
+                self._paths.pop(next(iter(self._paths)))
+            self._paths[key] = got
+        return got
+
+    def get_text_path(self, prop, s, ismath=False):
+        if ismath == "TeX":
+            return super().get_text_path(prop, s, ismath=ismath)
+
+        def make():
+            verts, codes = super(_CachedTextToPath, self).get_text_path(prop, s, ismath=ismath)
+            verts, codes = np.array(verts, dtype=np.float64), np.array(codes, dtype=np.uint8)
+            verts.flags.writeable = codes.flags.writeable = False
+            return verts, codes
+        return self.kept(("path",) + self.key(prop, s, ismath), make)
+
+
+# A marker's picture (its fill and stroke rasterized once) by its outline, colours and blend
+# space: tick marks are the same few markers in every figure and every save.
+_STAMPS: dict = {}
+
+# One for every renderer: a canvas makes a renderer per draw (AGG's canvas keeps its renderer,
+# and so its caches).
+_TEXT2PATH = _CachedTextToPath()
+
 
 class _unhinted:
     """Fonts loaded at the default hinting factor while text is measured or outlined:
@@ -103,13 +153,17 @@ def _snaps(path: Path, snap) -> bool:
 
 
 class _Target:
-    """Where items go: the figure's scene, or a clip layer (a scene over an integer rectangle of
-    the canvas, composited into the figure's scene when it is closed)."""
+    """Where items go: the figure's scene (main, clipped by the scene's clip to `box` for shapes;
+    rasters are cropped to it), or a clip layer (a scene over an integer rectangle of the canvas,
+    composited into the figure's scene when it is closed). x0, y0: the scene's origin on the
+    canvas; box: the canvas rectangle (x0, y0, x1, y1) items are clipped to."""
 
     def __init__(self, scene: Scene, x0: int = 0, y0: int = 0, key: Any = None, clip_path: Any = None,
-                 masked: bool = False) -> None:
+                 masked: bool = False, box: Optional[tuple] = None, main: bool = False) -> None:
         self.scene, self.core, self.x0, self.y0, self.key, self.clip_path = scene, scene._s, x0, y0, key, clip_path
         self.masked = masked  # clip_path is applied as a coverage mask when the layer is closed
+        self.box = box if box is not None else (x0, y0, x0 + scene.width, y0 + scene.height)
+        self.main = main
         self.items = 0
 
 
@@ -124,7 +178,10 @@ class RendererSplinefig(RendererBase):
         self.blend = _blend_of(blend)
         self.threads = THREADS if threads is None else int(threads)
         self.scene = Scene(max(self.width, 1), max(self.height, 1), background=(1.0, 1.0, 1.0, 0.0), blend=self.blend)
-        self._main = _Target(self.scene)
+        self._text2path = _TEXT2PATH
+        self._main = _Target(self.scene, main=True)
+        self._boxed: dict = {}  # box -> the main scene's target clipped to it
+        self._main_clip: Optional[tuple] = None  # the box the main scene clips shapes to now
         self._layer: Optional[_Target] = None
 
     # ---- matplotlib's questions ---------------------------------------------------------
@@ -159,38 +216,61 @@ class RendererSplinefig(RendererBase):
         return box
 
     def _target(self, gc, raster: bool = False) -> Optional[_Target]:
-        """The target for gc's clip, or None when nothing can show. Paths and text are clipped
-        by a clip path exactly (the layer's scene intersects them with it); rasters (images,
-        Gouraud meshes), which the renderer does not clip, go to a layer multiplied by the clip
-        path's exact coverage."""
+        """The target for gc's clip, or None when nothing can show. A clip rectangle (whole
+        pixels) clips the main scene's shapes exactly (the scene's clip) and crops its rasters,
+        which is the same picture as drawing them into a layer over the rectangle. A clip path
+        gives a layer: paths and text are clipped by it exactly (the layer's scene intersects
+        them with it); rasters (images, Gouraud meshes), which the renderer does not clip, go to
+        a layer multiplied by the clip path's exact coverage."""
         box = self._clip_box(gc)
         cp, cp_trans = gc.get_clip_path()
-        clip_path = None
-        if cp is not None:
-            flip = Affine2D().scale(1, -1).translate(0, self.height)
-            clip_path = cp.cleaned(cp_trans + flip, remove_nans=True, curves=True)
-        if box is None and clip_path is None:
-            self._close_layer()
-            return self._main
-        if box is None:
-            box = (0, 0, self.width, self.height)
-        if box[2] <= box[0] or box[3] <= box[1]:
+        full = (0, 0, self.width, self.height)
+        if box is not None and (box[2] <= box[0] or box[3] <= box[1]):
             return None
-        if clip_path is None and box == (0, 0, self.width, self.height):
+        if cp is None:
             self._close_layer()
-            return self._main
-        masked = raster and clip_path is not None
-        key = (box, None if clip_path is None else (clip_path.vertices.tobytes(), clip_path.codes.tobytes()), masked)
+            if box is None or box == full:
+                return self._main
+            t = self._boxed.get(box)
+            if t is None:
+                t = self._boxed[box] = _Target(self.scene, box=box, main=True)
+            return t
+        clip_path = cp.cleaned(cp_trans + self._flip(), remove_nans=True, curves=True)
+        if box is None:
+            box = full
+        masked = raster
+        key = (box, clip_path.vertices.tobytes(), clip_path.codes.tobytes(), masked)
         if self._layer is not None and self._layer.key == key:
             return self._layer
         self._close_layer()
         w, h = box[2] - box[0], box[3] - box[1]
         self._layer = _Target(Scene(w, h, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend), box[0], box[1], key, clip_path,
                               masked)
-        if clip_path is not None and not masked:
+        if not masked:
             v = np.ascontiguousarray(clip_path.vertices - (box[0], box[1]), dtype=np.float64)
             self._layer.core.set_clip(v, self._codes(clip_path), "nonzero")
         return self._layer
+
+    def _for_shapes(self, t: _Target) -> None:
+        """Sets the main scene's clip to t's box before shapes are added to it."""
+        if not t.main:
+            return
+        box = None if t.box == (0, 0, self.width, self.height) else t.box
+        if box == self._main_clip:
+            return
+        if box is None:
+            self.scene._s.clear_clip()
+        else:
+            x0, y0, x1, y1 = box
+            v = np.array([(x0, y0), (x1, y0), (x1, y1), (x0, y1), (x0, y0)], dtype=np.float64)
+            self.scene._s.set_clip(v, np.array([1, 2, 2, 2, 79], np.uint8), "nonzero")
+        self._main_clip = box
+
+    def _for_rasters(self, t: _Target) -> None:
+        """Clears the main scene's clip before rasters (cropped to t's box) are added to it."""
+        if t.main and self._main_clip is not None:
+            self.scene._s.clear_clip()
+            self._main_clip = None
 
     def _composite(self, into: _Target, t: _Target, mask: Optional[np.ndarray] = None) -> None:
         """Draws target t's picture (times mask, a per-pixel coverage) into `into` at t's place."""
@@ -201,6 +281,7 @@ class RendererSplinefig(RendererBase):
             im = _core.srgb_to_linear_rgba(np.ascontiguousarray(im, dtype=np.float32))
         h, w = im.shape[:2]
         x0, y0 = t.x0 - into.x0, t.y0 - into.y0
+        self._for_rasters(into)
         into.core.image(np.ascontiguousarray(im, dtype=np.float32), x0, y0, x0 + w, y0 + h, "nearest")
         into.items += 1
 
@@ -262,6 +343,7 @@ class RendererSplinefig(RendererBase):
         v = path.vertices
         if len(v) == 0:
             return
+        self._for_shapes(t)
         if t.x0 or t.y0:
             v = v - (t.x0, t.y0)
         v = np.ascontiguousarray(v, dtype=np.float64)
@@ -277,16 +359,19 @@ class RendererSplinefig(RendererBase):
     def _prepared(self, gc, path: Path, transform, fill, stroke, snap=None) -> Path:
         """The path in canvas pixels as AGG prepares it: NaNs removed, snapped (gc's snap, path.snap),
         simplified when only stroked (path.simplify), long strokes clipped to the canvas."""
-        trans = transform + self._flip()
         lw = float(self.points_to_pixels(gc.get_linewidth()))  # AGG snaps by gc's width, drawn or not
-        hatch = gc.get_hatch_path() is not None
+        return self._prepared_lw(path, transform, fill, stroke, lw, gc.get_snap() if snap is None else snap,
+                                 hatch=gc.get_hatch_path() is not None, sketch=gc.get_sketch_params())
+
+    def _prepared_lw(self, path: Path, transform, fill, stroke, lw: float, snap, hatch: bool = False, sketch=None) -> Path:
+        trans = transform + self._flip()
         clip = None
         if fill is None and not hatch and stroke is not None and not stroke["dashes"]:
             m = 4 * lw + 16
             clip = (-m, -m, self.width + m, self.height + m)
         simplify = path.should_simplify and fill is None and not hatch
         return path.cleaned(trans, remove_nans=True, clip=clip, simplify=simplify, curves=True,
-                            stroke_width=lw, snap=gc.get_snap() if snap is None else snap, sketch=gc.get_sketch_params())
+                            stroke_width=lw, snap=snap, sketch=sketch)
 
     def draw_path(self, gc, path, transform, rgbFace=None):
         t = self._target(gc)
@@ -306,10 +391,10 @@ class RendererSplinefig(RendererBase):
     def _hatch(self, gc, t: _Target, p: Path, hatch: Path) -> None:
         """The hatch pattern (one-inch tiles from the canvas origin, as AGG) inside the filled path."""
         ext = p.get_extents()
-        x0 = max(int(math.floor(ext.x0)), t.x0)
-        y0 = max(int(math.floor(ext.y0)), t.y0)
-        x1 = min(int(math.ceil(ext.x1)), t.x0 + t.scene.width)
-        y1 = min(int(math.ceil(ext.y1)), t.y0 + t.scene.height)
+        x0 = max(int(math.floor(ext.x0)), t.box[0])
+        y0 = max(int(math.floor(ext.y0)), t.box[1])
+        x1 = min(int(math.ceil(ext.x1)), t.box[2])
+        y1 = min(int(math.ceil(ext.y1)), t.box[3])
         if x1 <= x0 or y1 <= y0:
             return
         size = int(self.points_to_pixels(_HATCH_SIZE))
@@ -328,6 +413,116 @@ class RendererSplinefig(RendererBase):
                     layer.core.stroke_path(v, codes, color, float(lw), "miter", "butt", 4.0, [], 0.0)
         mask = self._coverage(p, x0, y0, x1 - x0, y1 - y0)
         self._composite(t, layer, mask)
+
+    def draw_path_collection(self, gc, master_transform, paths, all_transforms, offsets, offset_trans, facecolors,
+                             edgecolors, linewidths, linestyles, antialiaseds, urls, offset_position):
+        """RendererBase's loop (the same items, colours, widths and dashes, in the same order,
+        each its own fill and stroke), without a graphics context and a transform per item: a
+        path that is not snapped to the pixel grid is prepared once and moved to each offset."""
+        if gc.get_hatch_path() is not None or gc.get_sketch_params() is not None:
+            return super().draw_path_collection(gc, master_transform, paths, all_transforms, offsets, offset_trans,
+                                                facecolors, edgecolors, linewidths, linestyles, antialiaseds, urls,
+                                                offset_position)
+        path_ids = list(self._iter_collection_raw_paths(master_transform, paths, all_transforms))
+        Npaths, Noffsets = len(path_ids), len(offsets)
+        N = max(Npaths, Noffsets)
+        Nfc, Nec, Nlw, Nls = len(facecolors), len(edgecolors), len(linewidths), len(linestyles)
+        if (Nfc == 0 and Nec == 0) or Npaths == 0:
+            return
+        t = self._target(gc)
+        if t is None:
+            return
+        toffsets = np.asarray(offset_trans.transform(offsets), dtype=np.float64).reshape(-1, 2) if Noffsets else None
+        forced, alpha = gc.get_forced_alpha(), gc.get_alpha()
+        snap = gc.get_snap()
+        # gc0's state, which RendererBase's loop changes item by item and keeps for the next.
+        lw_pt = 0.0 if Nec == 0 else gc.get_linewidth()
+        dash_off, dash_list = gc.get_dashes()
+        stroke_rgba = tuple(gc.get_rgb())
+        flip = self._flip()
+        H = self.height
+        styles: dict = {}
+        bases: dict = {}
+        core = t.core
+        self._for_shapes(t)
+
+        def stroke_of(lw_pt, dash_off, dash_list, rgba):
+            key = (lw_pt, dash_off, None if dash_list is None else tuple(dash_list), rgba)
+            st = styles.get(key, False)
+            if st is False:
+                lw = self.points_to_pixels(lw_pt)
+                st = None
+                if lw > 0 and not (len(rgba) > 3 and rgba[3] <= 0):
+                    ds = []
+                    if dash_list is not None and len(dash_list):
+                        ds = [float(self.points_to_pixels(d)) for d in dash_list]
+                        if sum(ds) <= 0:
+                            ds = []
+                    st = (_linear_of(tuple(float(v) for v in rgba)), float(lw), gc.get_joinstyle(),
+                          _CAPS.get(gc.get_capstyle(), "butt"), 4.0, ds, float(self.points_to_pixels(dash_off or 0.0)))
+                styles[key] = st
+            return st
+
+        for i in range(N):
+            path, transform = path_ids[i % Npaths]
+            xo = yo = 0.0
+            if Noffsets:
+                xo, yo = toffsets[i % Noffsets]
+                if not (math.isfinite(xo) and math.isfinite(yo)):
+                    continue
+            if Nec:
+                if Nlw:
+                    lw_pt = linewidths[i % Nlw]
+                if Nls:
+                    dash_off, dash_list = linestyles[i % Nls]
+                ec = edgecolors[i % Nec]
+                if len(ec) == 4 and ec[3] == 0.0:
+                    lw_pt = 0
+                else:
+                    ec = mpl.colors.to_rgba(tuple(ec) if isinstance(ec, np.ndarray) else ec)
+                    stroke_rgba = ec[:3] + (alpha,) if forced else ec
+            fill = None
+            if Nfc:
+                fc = facecolors[i % Nfc]
+                if not (len(fc) == 4 and fc[3] == 0):
+                    c = tuple(float(v) for v in fc)
+                    if forced or len(c) == 3:
+                        c = c[:3] + (alpha,)
+                    if c[3] > 0:
+                        fill = _linear_of(c)
+            stroke = stroke_of(lw_pt, dash_off, dash_list, stroke_rgba)
+            if fill is None and stroke is None:
+                continue
+            lw = float(self.points_to_pixels(lw_pt))
+            key = (i % Npaths, fill is None, stroke is None or bool(stroke[5]), lw)
+            base = bases.get(key)
+            if base is None:
+                # Prepared at the origin as draw_path prepares it; a path that the grid snapping
+                # moves (which depends on where it lies) or that is simplified is prepared per item.
+                simplify = path.should_simplify and fill is None
+                p = path.cleaned(transform + flip, remove_nans=True, simplify=simplify, curves=True, stroke_width=lw,
+                                 snap=snap)
+                movable = not simplify and not _snaps(p, snap)
+                base = bases[key] = (movable, np.ascontiguousarray(p.vertices, dtype=np.float64), self._codes(p))
+            movable, v, codes = base
+            if movable:
+                if xo != 0 or yo != 0:
+                    v = v + (xo, -yo)
+            else:
+                tr = transform.frozen().translate(xo, yo) if xo != 0 or yo != 0 else transform
+                st = None if stroke is None else dict(width=stroke[1], dashes=stroke[5])
+                p = self._prepared_lw(path, tr, fill, st, lw, snap)
+                v, codes = np.ascontiguousarray(p.vertices, dtype=np.float64), self._codes(p)
+            if len(v) == 0:
+                continue
+            if t.x0 or t.y0:
+                v = v - (t.x0, t.y0)
+            if fill is not None:
+                core.fill_path(v, codes, "nonzero", fill)
+                t.items += 1
+            if stroke is not None:
+                core.stroke_path(v, codes, *stroke)
+                t.items += 1
 
     def draw_markers(self, gc, marker_path, marker_trans, path, trans, rgbFace=None):
         """One outline, prepared once, drawn at each vertex of path (at the nearest whole pixel,
@@ -392,13 +587,21 @@ class RendererSplinefig(RendererBase):
             y0 = int(math.floor(ext.y0 - margin))
             w = int(math.ceil(ext.x1 + margin)) - x0
             h = int(math.ceil(ext.y1 + margin)) - y0
-            stamp = _Target(Scene(w, h, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend))
-            self._emit(stamp, Path(mv - (x0, y0), mp.codes), fill, stroke)
-            im = stamp.core.render(1)  # in the blend space's values, which the canvas takes as they are
-            core.images(np.ascontiguousarray(im, dtype=np.float32), np.ascontiguousarray(offs + (x0, y0), dtype=np.float64),
-                        "srgb" if self.blend == "srgb" else "linear")
-            t.items += len(offs)
+            v = np.ascontiguousarray(mv - (x0, y0), dtype=np.float64)
+            key = (w, h, v.tobytes(), codes.tobytes(), fill, None if stroke is None else tuple(map(repr, stroke.values())),
+                   self.blend)
+            im = _STAMPS.get(key)
+            if im is None:
+                stamp = _Target(Scene(w, h, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend))
+                self._emit(stamp, Path(v, mp.codes), fill, stroke)
+                im = np.ascontiguousarray(stamp.core.render(1), dtype=np.float32)  # in the blend space's values
+                im.flags.writeable = False
+                if len(_STAMPS) >= 256:
+                    _STAMPS.pop(next(iter(_STAMPS)))
+                _STAMPS[key] = im
+            self._stamps(t, im, offs + (x0, y0))
             return
+        self._for_shapes(t)
         for ox, oy in offs:
             v = mv + (ox, oy)
             if fill is not None:
@@ -407,6 +610,26 @@ class RendererSplinefig(RendererBase):
                 core.stroke_path(v, codes, stroke["color"], stroke["width"], stroke["join"], stroke["cap"], stroke["miter_limit"],
                                  stroke["dashes"], stroke["dash_offset"])
         t.items += len(offs)
+
+    def _stamps(self, t: _Target, im: np.ndarray, origins: np.ndarray) -> None:
+        """Picture im (float32, the blend space's values) composited at each whole-pixel origin
+        (t's coordinates), cropped to t's box: the pictures inside it in one call, the few
+        across its edge one by one."""
+        enc = "srgb" if self.blend == "srgb" else "linear"
+        h, w = im.shape[:2]
+        bx0, by0, bx1, by1 = (t.box[0] - t.x0, t.box[1] - t.y0, t.box[2] - t.x0, t.box[3] - t.y0)
+        ox, oy = origins[:, 0], origins[:, 1]
+        inside = (ox >= bx0) & (oy >= by0) & (ox + w <= bx1) & (oy + h <= by1)
+        self._for_rasters(t)
+        if inside.any():
+            t.core.images(im, np.ascontiguousarray(origins[inside], dtype=np.float64), enc)
+        for x, y in origins[~inside]:
+            x, y = int(x), int(y)
+            cx0, cy0, cx1, cy1 = max(x, bx0), max(y, by0), min(x + w, bx1), min(y + h, by1)
+            if cx1 > cx0 and cy1 > cy0:
+                crop = np.ascontiguousarray(im[cy0 - y:cy1 - y, cx0 - x:cx1 - x])
+                t.core.images(crop, np.array([[cx0, cy0]], dtype=np.float64), enc)
+        t.items += len(origins)
 
     def draw_gouraud_triangles(self, gc, triangles_array, colors_array, transform):
         """Triangles with colours interpolated linearly (in the blend space's values, as AGG
@@ -426,11 +649,10 @@ class RendererSplinefig(RendererBase):
         if len(pts) == 0:
             return
         tx0, ty0 = t.x0, t.y0
-        tw, th = t.scene.width, t.scene.height
-        x0 = max(int(math.floor(pts[:, :, 0].min())), tx0)
-        y0 = max(int(math.floor(pts[:, :, 1].min())), ty0)
-        x1 = min(int(math.ceil(pts[:, :, 0].max())), tx0 + tw)
-        y1 = min(int(math.ceil(pts[:, :, 1].max())), ty0 + th)
+        x0 = max(int(math.floor(pts[:, :, 0].min())), t.box[0])
+        y0 = max(int(math.floor(pts[:, :, 1].min())), t.box[1])
+        x1 = min(int(math.ceil(pts[:, :, 0].max())), t.box[2])
+        y1 = min(int(math.ceil(pts[:, :, 1].max())), t.box[3])
         if x1 <= x0 or y1 <= y0:
             return
         acc = np.zeros((y1 - y0, x1 - x0, 4), np.float64)
@@ -462,6 +684,7 @@ class RendererSplinefig(RendererBase):
         acc = np.minimum(acc, 1.0).astype(np.float32)
         if srgb:
             acc = _core.srgb_to_linear_rgba(np.ascontiguousarray(acc))
+        self._for_rasters(t)
         t.core.image(np.ascontiguousarray(acc, dtype=np.float32), x0 - tx0, y0 - ty0, x1 - tx0, y1 - ty0, "nearest")
         t.items += 1
 
@@ -479,16 +702,27 @@ class RendererSplinefig(RendererBase):
             a[:, :, 3] = np.round(a[:, :, 3] * float(alpha)).astype(np.uint8)
         # Whole pixels, as AGG places images: x, y rounded half away from zero, then truncated.
         rx, ry = (math.floor(v + 0.5) if v >= 0 else math.ceil(v - 0.5) for v in (x, y))
-        x0 = int(rx) - t.x0
-        y0 = int(self.height - (ry + h)) - t.y0
-        t.core.image(np.ascontiguousarray(a, dtype=np.uint8), x0, y0, x0 + w, y0 + h, "nearest")
+        x0 = int(rx)
+        y0 = int(self.height - (ry + h))
+        # Cropped to the target's box (whole pixels, so the same picture as a clipped one).
+        cx0, cy0, cx1, cy1 = max(x0, t.box[0]), max(y0, t.box[1]), min(x0 + w, t.box[2]), min(y0 + h, t.box[3])
+        if cx1 <= cx0 or cy1 <= cy0:
+            return
+        a = a[cy0 - y0:cy1 - y0, cx0 - x0:cx1 - x0]
+        self._for_rasters(t)
+        t.core.image(np.ascontiguousarray(a, dtype=np.uint8), cx0 - t.x0, cy0 - t.y0, cx1 - t.x0, cy1 - t.y0, "nearest")
         t.items += 1
 
     def get_text_width_height_descent(self, s, prop, ismath):
         """RendererBase's metrics (TextToPath's unhinted font, mathtext's path parser) at the
-        default hinting factor, so the layout does not change with text.hinting_factor."""
-        with _unhinted():
-            return super().get_text_width_height_descent(s, prop, ismath)
+        default hinting factor, so the layout does not change with text.hinting_factor; kept
+        with the outlines (matplotlib keeps them per renderer, and a canvas makes one per draw)."""
+        def make():
+            with _unhinted():
+                return super(RendererSplinefig, self).get_text_width_height_descent(s, prop, ismath)
+        if ismath == "TeX":
+            return make()
+        return self._text2path.kept(("size", self.dpi) + _CachedTextToPath.key(prop, s, ismath), make)
 
     def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
         """The glyph outlines of matplotlib's TextToPath (unhinted), filled; never snapped."""
@@ -509,7 +743,9 @@ class RendererSplinefig(RendererBase):
 
     def clear(self) -> None:
         self.scene = Scene(max(self.width, 1), max(self.height, 1), background=(1.0, 1.0, 1.0, 0.0), blend=self.blend)
-        self._main = _Target(self.scene)
+        self._main = _Target(self.scene, main=True)
+        self._boxed = {}
+        self._main_clip = None
         self._layer = None
 
     def rgba8(self) -> np.ndarray:

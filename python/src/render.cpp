@@ -124,19 +124,25 @@ py::array rgba8_of(const Image& im, std::array<std::uint8_t, 3> clear) {
   std::vector<std::uint8_t> out(count * 4);
   const float* s = im.pixels.data();
   const bool srgb = im.encoding == Encoding::srgb;
-  for (std::size_t i = 0; i < count; ++i, s += 4) {
-    std::uint8_t* d = &out[4 * i];
-    const float a = std::clamp(s[3], 0.0f, 1.0f);
-    const long a8 = std::lround(a * 255.0f);
-    if (a8 == 0) {
-      d[0] = clear[0], d[1] = clear[1], d[2] = clear[2], d[3] = 0;
-      continue;
+  // lround of a value in [0, 255] (0 for NaN), without the library call: a float plus 0.5 is
+  // exact in double.
+  const auto round8 = [](float v) { return v > 0.0f ? static_cast<std::uint8_t>(static_cast<double>(v) + 0.5) : std::uint8_t{0}; };
+  {
+    py::gil_scoped_release unlocked;
+    for (std::size_t i = 0; i < count; ++i, s += 4) {
+      std::uint8_t* d = &out[4 * i];
+      const float a = std::clamp(s[3], 0.0f, 1.0f);
+      const std::uint8_t a8 = round8(a * 255.0f);
+      if (a8 == 0) {
+        d[0] = clear[0], d[1] = clear[1], d[2] = clear[2], d[3] = 0;
+        continue;
+      }
+      for (int ch = 0; ch < 3; ++ch) {
+        const float v = s[ch] / a;
+        d[ch] = srgb ? round8(std::clamp(v, 0.0f, 1.0f) * 255.0f) : linear_to_srgb8(v);
+      }
+      d[3] = a8;
     }
-    for (int ch = 0; ch < 3; ++ch) {
-      const float v = s[ch] / a;
-      d[ch] = srgb ? static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)) : linear_to_srgb8(v);
-    }
-    d[3] = static_cast<std::uint8_t>(a8);
   }
   return array_owning<std::uint8_t>(std::move(out), {im.height, im.width, 4});
 }
