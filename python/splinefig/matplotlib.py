@@ -282,12 +282,22 @@ class RendererSplinefig(RendererBase):
         h, w = im.shape[:2]
         x0, y0 = t.x0 - into.x0, t.y0 - into.y0
         self._for_rasters(into)
+        clipped = into.clip_path is not None and not into.masked
+        if clipped:  # a layer whose scene clips: the picture (already clipped) goes in unclipped
+            into.core.clear_clip()
         into.core.image(np.ascontiguousarray(im, dtype=np.float32), x0, y0, x0 + w, y0 + h, "nearest")
+        if clipped:
+            into.core.set_clip(np.ascontiguousarray(into.clip_path.vertices - (into.x0, into.y0), dtype=np.float64),
+                               self._codes(into.clip_path), "nonzero")
         into.items += 1
 
-    def _coverage(self, path: Path, x0: int, y0: int, w: int, h: int, rule: str = "nonzero") -> np.ndarray:
-        """The exact area coverage of a filled path (canvas pixels) over a w x h rectangle at (x0, y0)."""
+    def _coverage(self, path: Path, x0: int, y0: int, w: int, h: int, rule: str = "nonzero",
+                  clip: Optional[Path] = None) -> np.ndarray:
+        """The exact area coverage of a filled path (canvas pixels), intersected with the clip path
+        when there is one, over a w x h rectangle at (x0, y0)."""
         s = Scene(w, h, background=(0.0, 0.0, 0.0, 0.0))
+        if clip is not None:
+            s._s.set_clip(np.ascontiguousarray(clip.vertices - (x0, y0), dtype=np.float64), self._codes(clip), "nonzero")
         v = np.ascontiguousarray(path.vertices - (x0, y0), dtype=np.float64)
         s._s.fill_path(v, self._codes(path), rule, (1.0, 1.0, 1.0, 1.0))
         return s._s.render(self.threads)[:, :, 3]
@@ -411,7 +421,7 @@ class RendererSplinefig(RendererBase):
                 layer.core.fill_path(v, codes, "nonzero", color)
                 if lw > 0:
                     layer.core.stroke_path(v, codes, color, float(lw), "miter", "butt", 4.0, [], 0.0)
-        mask = self._coverage(p, x0, y0, x1 - x0, y1 - y0)
+        mask = self._coverage(p, x0, y0, x1 - x0, y1 - y0, clip=None if t.masked else t.clip_path)
         self._composite(t, layer, mask)
 
     def draw_path_collection(self, gc, master_transform, paths, all_transforms, offsets, offset_trans, facecolors,

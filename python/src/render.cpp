@@ -138,7 +138,7 @@ py::array rgba8_of(const Image& im, std::array<std::uint8_t, 3> clear) {
         continue;
       }
       for (int ch = 0; ch < 3; ++ch) {
-        const float v = s[ch] / a;
+        const float v = a == 1.0f ? s[ch] : s[ch] / a;  // most pixels are opaque: skip the division
         d[ch] = srgb ? round8(std::clamp(v, 0.0f, 1.0f) * 255.0f) : linear_to_srgb8(v);
       }
       d[3] = a8;
