@@ -274,18 +274,18 @@ class RendererSplinefig(RendererBase):
 
     def _composite(self, into: _Target, t: _Target, mask: Optional[np.ndarray] = None) -> None:
         """Draws target t's picture (times mask, a per-pixel coverage) into `into` at t's place."""
-        im = t.core.render(self.threads)
+        im = t.core.render(self._threads_for(t.scene))
         if mask is not None:
             im = im * mask[:, :, None]
-        if self.blend == "srgb":
-            im = _core.srgb_to_linear_rgba(np.ascontiguousarray(im, dtype=np.float32))
         h, w = im.shape[:2]
         x0, y0 = t.x0 - into.x0, t.y0 - into.y0
         self._for_rasters(into)
         clipped = into.clip_path is not None and not into.masked
         if clipped:  # a layer whose scene clips: the picture (already clipped) goes in unclipped
             into.core.clear_clip()
-        into.core.image(np.ascontiguousarray(im, dtype=np.float32), x0, y0, x0 + w, y0 + h, "nearest")
+        # In the blend space's values, as rendered: no round trip through linear light.
+        into.core.images(np.ascontiguousarray(im, dtype=np.float32), np.array([[x0, y0]], dtype=np.float64),
+                         "srgb" if self.blend == "srgb" else "linear")
         if clipped:
             into.core.set_clip(np.ascontiguousarray(into.clip_path.vertices - (into.x0, into.y0), dtype=np.float64),
                                self._codes(into.clip_path), "nonzero")
@@ -300,7 +300,12 @@ class RendererSplinefig(RendererBase):
             s._s.set_clip(np.ascontiguousarray(clip.vertices - (x0, y0), dtype=np.float64), self._codes(clip), "nonzero")
         v = np.ascontiguousarray(path.vertices - (x0, y0), dtype=np.float64)
         s._s.fill_path(v, self._codes(path), rule, (1.0, 1.0, 1.0, 1.0))
-        return s._s.render(self.threads)[:, :, 3]
+        return s._s.render(self._threads_for(s))[:, :, 3]
+
+    def _threads_for(self, scene: Scene) -> int:
+        """Threads for rendering a picture apart (a layer, a mask): one for a small one, where
+        starting threads costs more than they save; the bytes are the same either way."""
+        return 1 if scene.width * scene.height <= 1 << 16 else self.threads
 
     def _close_layer(self) -> None:
         t, self._layer = self._layer, None
@@ -691,11 +696,9 @@ class RendererSplinefig(RendererBase):
             k = (a * cov)[..., None]
             acc[by0 - y0:by1 - y0, bx0 - x0:bx1 - x0, :3] += rgb * k
             acc[by0 - y0:by1 - y0, bx0 - x0:bx1 - x0, 3] += k[..., 0]
-        acc = np.minimum(acc, 1.0).astype(np.float32)
-        if srgb:
-            acc = _core.srgb_to_linear_rgba(np.ascontiguousarray(acc))
+        acc = np.ascontiguousarray(np.minimum(acc, 1.0), dtype=np.float32)
         self._for_rasters(t)
-        t.core.image(np.ascontiguousarray(acc, dtype=np.float32), x0 - tx0, y0 - ty0, x1 - tx0, y1 - ty0, "nearest")
+        t.core.images(acc, np.array([[x0 - tx0, y0 - ty0]], dtype=np.float64), "srgb" if srgb else "linear")
         t.items += 1
 
     def draw_image(self, gc, x, y, im, transform=None):
@@ -720,7 +723,14 @@ class RendererSplinefig(RendererBase):
             return
         a = a[cy0 - y0:cy1 - y0, cx0 - x0:cx1 - x0]
         self._for_rasters(t)
-        t.core.image(np.ascontiguousarray(a, dtype=np.uint8), cx0 - t.x0, cy0 - t.y0, cx1 - t.x0, cy1 - t.y0, "nearest")
+        if self.blend == "srgb":
+            # The sRGB values as they are (associated alpha), composited without a round trip
+            # through linear light.
+            f = a.astype(np.float32) / np.float32(255)
+            f[:, :, :3] *= f[:, :, 3:]
+            t.core.images(f, np.array([[cx0 - t.x0, cy0 - t.y0]], dtype=np.float64), "srgb")
+        else:
+            t.core.image(np.ascontiguousarray(a, dtype=np.uint8), cx0 - t.x0, cy0 - t.y0, cx1 - t.x0, cy1 - t.y0, "nearest")
         t.items += 1
 
     def get_text_width_height_descent(self, s, prop, ismath):
