@@ -277,8 +277,12 @@ class RendererSplinefig(RendererBase):
         im = t.core.render(self._threads_for(t.scene))
         if mask is not None:
             im = im * mask[:, :, None]
-        h, w = im.shape[:2]
-        x0, y0 = t.x0 - into.x0, t.y0 - into.y0
+        self._picture(into, im, t.x0, t.y0)
+
+    def _picture(self, into: _Target, im: np.ndarray, x0: int, y0: int) -> None:
+        """Composites a picture (float32, associated alpha, in the blend space's values, as a
+        scene renders it) into `into` at canvas pixel (x0, y0)."""
+        x0, y0 = x0 - into.x0, y0 - into.y0
         self._for_rasters(into)
         clipped = into.clip_path is not None and not into.masked
         if clipped:  # a layer whose scene clips: the picture (already clipped) goes in unclipped
@@ -415,19 +419,32 @@ class RendererSplinefig(RendererBase):
         size = int(self.points_to_pixels(_HATCH_SIZE))
         if size < 1:
             return
-        lw = self.points_to_pixels(mpl.rcParams["hatch.linewidth"])
+        lw = float(self.points_to_pixels(mpl.rcParams["hatch.linewidth"]))
         color = _linear(gc.get_hatch_color())
-        layer = _Target(Scene(x1 - x0, y1 - y0, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend), x0, y0)
         tile = hatch.transformed(Affine2D().scale(size, size).scale(1, -1).translate(0, size))
-        codes = self._codes(tile)
-        for ty in range(y0 // size, (y1 - 1) // size + 1):
-            for tx in range(x0 // size, (x1 - 1) // size + 1):
-                v = np.ascontiguousarray(tile.vertices + (tx * size - x0, ty * size - y0), dtype=np.float64)
-                layer.core.fill_path(v, codes, "nonzero", color)
-                if lw > 0:
-                    layer.core.stroke_path(v, codes, color, float(lw), "miter", "butt", 4.0, [], 0.0)
-        mask = self._coverage(p, x0, y0, x1 - x0, y1 - y0, clip=None if t.masked else t.clip_path)
-        self._composite(t, layer, mask)
+        key = ("hatch", size, tile.vertices.tobytes(), self._codes(tile).tobytes(), lw, color, self.blend)
+        pattern = _STAMPS.get(key)
+        if pattern is None:
+            # One tile, drawn into a scene of its size, which cuts the lines that run past it (as
+            # AGG draws its hatch into a tile buffer): filled, then stroked with square caps.
+            scene = Scene(size, size, background=(0.0, 0.0, 0.0, 0.0), blend=self.blend)
+            v, codes = np.ascontiguousarray(tile.vertices, dtype=np.float64), self._codes(tile)
+            scene._s.fill_path(v, codes, "nonzero", color)
+            if lw > 0:
+                scene._s.stroke_path(v, codes, color, lw, "miter", "square", 4.0, [], 0.0)
+            pattern = np.ascontiguousarray(scene._s.render(self._threads_for(scene)), dtype=np.float32)
+            pattern.flags.writeable = False
+            if len(_STAMPS) >= 256:
+                _STAMPS.pop(next(iter(_STAMPS)))
+            _STAMPS[key] = pattern
+        # The tiles repeat from the canvas origin; the part over the path's pixels, times the
+        # path's exact coverage.
+        w, h = x1 - x0, y1 - y0
+        ox, oy = x0 % size, y0 % size
+        reps = ((oy + h + size - 1) // size, (ox + w + size - 1) // size, 1)
+        im = np.tile(pattern, reps)[oy:oy + h, ox:ox + w]
+        mask = self._coverage(p, x0, y0, w, h, clip=None if t.masked else t.clip_path)
+        self._picture(t, im * mask[:, :, None], x0, y0)
 
     def draw_path_collection(self, gc, master_transform, paths, all_transforms, offsets, offset_trans, facecolors,
                              edgecolors, linewidths, linestyles, antialiaseds, urls, offset_position):

@@ -89,6 +89,26 @@ def clipped_path():
     return fig
 
 
+def scatter_1e4():
+    # 10^4 markers of one colour: draw_markers, one picture composited at whole pixels.
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    rng = np.random.default_rng(1)
+    ax.scatter(rng.normal(size=10000), rng.normal(size=10000), s=10)
+    return fig
+
+
+def clip_and_hatch():
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    x = np.linspace(0, 10, 400)
+    line, = ax.plot(x, np.cos(x), lw=4, color="C3")
+    circle = mpl.patches.Circle((5, 0), 1.5, transform=ax.transData, facecolor="none")
+    ax.add_patch(circle)
+    line.set_clip_path(circle)
+    ax.bar([1, 2, 3, 4], [0.5, 0.8, 0.3, 0.9], hatch="//", fill=False)
+    ax.bar([6, 7], [0.6, 0.4], hatch="x", color="C2", alpha=0.5)
+    return fig
+
+
 def gouraud():
     fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
     x = np.linspace(0, 1, 8)
@@ -101,7 +121,7 @@ def gouraud():
 # an edge of AGG's picture a large difference may be: 3 px for text, whose hinted metrics move
 # AGG's mathtext rules and glyphs by up to that much)
 FIGURES = [(line_plot, 1.0, 2), (scatter, 0.7, 2), (markers, 1.0, 2), (fill_between, 1.0, 2), (imshow, 0.7, 2),
-           (text_and_mathtext, 2.5, 3), (clipped_path, 0.7, 2),
+           (text_and_mathtext, 2.5, 3), (clipped_path, 0.7, 2), (scatter_1e4, 0.7, 2), (clip_and_hatch, 1.0, 2),
            (gouraud, 1.0, 2)]
 
 
@@ -129,6 +149,56 @@ def test_agrees_with_agg(make, mean_limit, radius):
     # Every large difference is at an edge of AGG's picture, where its coverage (or its hinted
     # glyph) is approximate; the flat areas agree.
     assert away.sum() == 0, np.argwhere(away)[:10]
+
+
+def test_dense_line_differs_from_agg_only_where_agg_closes_gaps(monkeypatch):
+    """A noisy line of 10^5 points (a dense, self-crossing stroke): the large differences away
+    from AGG's edges are pixels where the exact union of the stroke's pieces leaves a gap inside
+    the band, which AGG, filling its outline by the nonzero rule, closes. Each such pixel's
+    coverage is checked against the independent definition of a round-joined stroke: the points
+    within half the width of the polyline, sampled 32 x 32 in the pixel."""
+    import splinefig.matplotlib as backend
+
+    strokes = []
+    emit = backend.RendererSplinefig._emit
+
+    def recording(self, t, path, fill, stroke, rule="nonzero"):
+        if stroke is not None and len(path.vertices) > 5000:
+            strokes.append((np.array(path.vertices) + (t.x0, t.y0), stroke["width"], stroke["join"]))
+        emit(self, t, path, fill, stroke, rule)
+
+    monkeypatch.setattr(backend.RendererSplinefig, "_emit", recording)
+    fig, ax = plt.subplots(figsize=(6, 4), dpi=100)
+    x = np.linspace(0, 10, 100000)
+    ax.plot(x, np.sin(x) + 0.1 * np.random.default_rng(0).normal(size=x.size), lw=1, color="k")
+    agg = png(fig)
+    ours = png(fig, BACKEND)
+    plt.close(fig)
+    (v, _, join), = strokes  # the line's vertices in pixels, as matplotlib prepares them for AGG too
+    assert join == "round"
+    width = 1 * 100 / 72  # lw = 1 point at 100 dpi
+    d = np.abs(agg - ours)
+    mean, big = d.mean(), d.max(axis=2) > 48
+    away = np.argwhere(big & ~edges(agg, 3))
+    print(f"dense line: mean {mean:.3f}, large {big.sum()} px, away from AGG's edges {len(away)}")
+    assert mean < 1.5
+    assert 1 <= len(away) < 20  # the gaps exist (seeded data), so the check below is not empty
+    a, b = v[:-1], v[1:]
+    n = 32
+    for row, col in away:
+        near = ((np.minimum(a[:, 0], b[:, 0]) < col + 1 + width) & (np.maximum(a[:, 0], b[:, 0]) > col - width)
+                & (np.minimum(a[:, 1], b[:, 1]) < row + 1 + width) & (np.maximum(a[:, 1], b[:, 1]) > row - width))
+        sa, sb = a[near], b[near]
+        ab = sb - sa
+        inside = 0
+        for i in range(n):
+            for j in range(n):
+                p = np.array([col + (i + 0.5) / n, row + (j + 0.5) / n])
+                t = np.clip(((p - sa) * ab).sum(1) / np.maximum((ab * ab).sum(1), 1e-300), 0, 1)
+                inside += np.sqrt(((p - sa - t[:, None] * ab) ** 2).sum(1)).min() <= width / 2
+        want = inside / n**2
+        assert agg[row, col, 0] < 8 and want < 0.9  # AGG covers it, the stroke does not
+        assert abs((255 - ours[row, col, 0]) / 255 - want) < 0.03, (row, col, want, ours[row, col, 0])
 
 
 @pytest.mark.parametrize("marker", ["o", "h", "s", "^", "+"])
@@ -385,3 +455,41 @@ def test_hatch_under_a_clip_path():
     inside = r < 59
     assert (whole[inside, 3] > 0).sum() > 1000  # hatch lines cross the circle
     assert np.array_equal(clipped[inside], whole[inside])
+
+
+def test_hatch_lines_by_hand():
+    # A 200 x 200 px canvas hatched "/" (matplotlib's density 6: in each one-inch tile, lines
+    # x - y = k for k in -1, -2/3, ..., 1 in tile units, y up), black, width hatch.linewidth
+    # (1 pt), on nothing: the alpha summed over the canvas is the area of the lines' strips within
+    # their tiles, each strip clipped to its tile by Sutherland-Hodgman (the strips do not
+    # overlap). Lines drawn past their tile, over the next tile's, would add their antialiased
+    # edges twice.
+    size, w = 100, 100 / 72
+    fig = plt.figure(figsize=(2, 2), dpi=100)
+    fig.add_artist(mpl.patches.Rectangle((0, 0), 200, 200, transform=None, facecolor="none", edgecolor="black", lw=0,
+                                         hatch="/", snap=False))
+    im = png(fig, BACKEND, transparent=True)
+    plt.close(fig)
+    want = 0.0
+    h = w / 2 / np.sqrt(2)  # the strip's half-width along x and along y
+    for tx in range(2):
+        for ty in range(2):
+            tile = [(tx * size, ty * size), (tx * size + size, ty * size), (tx * size + size, ty * size + size),
+                    (tx * size, ty * size + size)]
+            for k in np.linspace(-1, 1, 7):
+                # The line through (t, t - k) tile units (y up), in canvas pixels (y down): a long
+                # thin rectangle along the direction (1, -1).
+                cx, cy = tx * size + size * 0.5, ty * size + size * (1 - (0.5 - k))
+                d = np.array([1, -1]) / np.sqrt(2) * 2 * size
+                nrm = np.array([1, 1]) / np.sqrt(2) * (w / 2)
+                c = np.array([cx, cy])
+                strip = [tuple(c - d - nrm), tuple(c + d - nrm), tuple(c + d + nrm), tuple(c - d + nrm)]
+                part = _clip_convex(strip, tile[::-1] if _area_signed(tile) < 0 else tile)
+                want += _area(part) if len(part) >= 3 else 0.0
+    got = im[:, :, 3].sum() / 255
+    print("hatch", got, want)
+    assert abs(got - want) < 1e-3 * want + 2, (got, want)
+
+
+def _area_signed(poly):
+    return 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(poly, poly[1:] + poly[:1]))
