@@ -5,7 +5,7 @@
 #include <splinefig/image/atomic_file.hpp>
 #include <splinefig/image/io.hpp>
 
-#include "toml_reader.hpp"
+#include "load/toml_reader.hpp"
 
 #include <algorithm>
 #include <array>

@@ -3,7 +3,7 @@
 #include <splinefig/image/atomic_file.hpp>
 #include <splinefig/vector/vector.hpp>
 
-#include "rich_text.hpp"
+#include "text/rich_text.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,16 +1,13 @@
 // A whole figure: title, pixel-space items and axes panels in document order.
 #include <splinefig/figures/figure.hpp>
 
-#include "caption_fields.hpp"
-#include "plot.hpp"
-#include "rich_text.hpp"
+#include "layout/caption_text.hpp"
+#include "paint/draw.hpp"
+#include "text/rich_text.hpp"
 
 #include <cmath>
 
 namespace splinefig::figures {
-
-AxisMap AxesInfo::x_map() const { return {x_scale, x_range[0], x_range[1], pixel_box[0], pixel_box[2]}; }
-AxisMap AxesInfo::y_map() const { return {y_scale, y_range[0], y_range[1], pixel_box[3], pixel_box[1]}; }
 
 void check_scaled_canvas(const FigureSpec& spec, double scale, const std::string& what) {
   if (!(scale > 0) || !std::isfinite(scale)) throw SpecFileError(what + ": the scale must be a positive number");

@@ -3,7 +3,7 @@
 // compared with the original curve evaluated here by its Bernstein form.
 #include <catch2/catch.hpp>
 
-#include "figures/src/clip_path.hpp"
+#include "figures/src/paint/clip_path.hpp"
 
 #include <array>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include "spec_error_check.hpp"
 #include <catch2/catch.hpp>
 
-#include "figures/src/rich_text.hpp"
+#include "figures/src/text/rich_text.hpp"
 
 #include <splinefig/figures/figure.hpp>
 #include <splinefig/figures/spec.hpp>

@@ -393,8 +393,9 @@ struct Layout {
   double spacing = 24;  // between panels
 };
 
-// A computed field of the caption, `{=name}` in its text (caption_fields.cpp, docs/spec.md): a
-// value of one plot element's data, worked out when the figure is built.
+// A computed field of the caption, `{=name}` in its text (docs/spec.md): a value of one plot
+// element's data, read by the loader (src/load/caption_fields.cpp) and worked out when the
+// figure is laid out (src/layout/caption_text.cpp).
 struct CaptionField {
   std::string name;     // as written in the caption
   std::string element;  // the element's key path, "axes[1].bezier[0]"

@@ -4,8 +4,6 @@
 // rejects the keys nobody asked for (typos such as `colour`), so no key is silently ignored.
 #include <splinefig/figures/spec.hpp>
 
-#include "spec_data.hpp"
-
 #include <toml++/toml.h>
 
 #include <optional>
@@ -14,6 +12,19 @@
 #include <vector>
 
 namespace splinefig::figures::detail {
+
+class TableReader;
+
+// Where points named rather than written come from (spec_data.hpp: `KEY_file` and [data] names).
+class PointSource {
+ public:
+  // The points of `key` of the table `r` reads when they are given by name; nullopt when `key`
+  // holds points itself (or nothing).
+  virtual std::optional<std::vector<Vec2>> points(TableReader& r, std::string_view key) const = 0;
+
+ protected:
+  ~PointSource() = default;
+};
 
 class TableReader {
  public:
@@ -44,9 +55,9 @@ class TableReader {
   std::vector<std::string> strings(std::string_view key);
   std::optional<Vec2> opt_point(std::string_view key);
   // [[x,y], ...]; [] if absent. With set_data(): also KEY_file = "x.csv" and KEY = "NAME" of
-  // [data] (spec_data.hpp), and has(KEY) is true when KEY_file is there.
+  // [data] (spec_data.hpp), as the source reads them, and has(KEY) is true when KEY_file is there.
   std::vector<Vec2> points(std::string_view key);
-  void set_data(const SpecData* data) { data_ = data; }
+  void set_data(const PointSource* data) { data_ = data; }
   // Keys that must be there: fail with `missing` when they are not.
   Vec2 required_point(std::string_view key, const std::string& missing);
   std::string required_label(std::string_view key, const std::string& missing);
@@ -98,7 +109,7 @@ class TableReader {
   const toml::table& table_;
   std::string file_, path_;
   std::set<std::string, std::less<>> used_;
-  const SpecData* data_ = nullptr;
+  const PointSource* data_ = nullptr;
 };
 
 std::string line_of(const std::string& file, const toml::source_region& where);

@@ -1,6 +1,6 @@
 // The outline of a fill under a curve, kernel or series (spec_fill.cpp), in pixels, from the
 // same samples those elements are drawn with.
-#include "plot.hpp"
+#include "panel.hpp"
 
 #include <splinefig/figures/sampling.hpp>
 

@@ -1,5 +1,5 @@
 // Occupancy grid for label placement, and clipping of polylines and polygons to a box.
-#include "plot.hpp"
+#include "draw.hpp"
 
 #include <algorithm>
 #include <cmath>

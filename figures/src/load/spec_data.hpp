@@ -3,6 +3,8 @@
 // "Data"): `KEY_file = "knots.csv"` next to any key that takes points (`points`, `knots`), read
 // by the command line's CSV rules relative to the spec's directory, and `[data] NAME = [[x, y],
 // ...]` tables, used as `points = "NAME"`.
+#include "toml_reader.hpp"
+
 #include <splinefig/figures/spec.hpp>
 
 #include <map>
@@ -13,11 +15,11 @@
 
 namespace splinefig::figures::detail {
 
-class TableReader;
-
-struct SpecData {
+struct SpecData final : PointSource {
   std::string base_dir;                              // resolves KEY_file paths
   std::map<std::string, std::vector<Vec2>> named;    // [data]
+  // data_points(r, key, *this).
+  std::optional<std::vector<Vec2>> points(TableReader& r, std::string_view key) const override;
 };
 
 // The [data] table of the spec's top level `r` (none: no names).

@@ -1,5 +1,5 @@
 // Panel layout: data ranges, the plot box inside the panel's cell, and the ticks.
-#include "plot.hpp"
+#include "panel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -136,6 +136,25 @@ void equalize(std::array<double, 2>& xr, std::array<double, 2>& yr, double w, do
 
 }  // namespace
 
+std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const TextMeasure& p,
+                                  const Guides& g) {
+  const Font& f = g.legend_font;
+  double text_w = 0;
+  for (const auto& l : labels) text_w = std::max(text_w, p.measure(l, f).width);
+  Font tf = f;
+  tf.bold = true;
+  double title_h = 0;
+  if (!ax.legend_title.empty()) {
+    text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - kLegendSample - kLegendGap);
+    title_h = kLegendRow;
+  }
+  const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(labels.size())));
+  const int rows = static_cast<int>((labels.size() + cols - 1) / cols);
+  const double col_w = kLegendSample + kLegendGap + text_w + kLegendColumnGap;
+  return {std::ceil(kLegendPad + cols * col_w - kLegendColumnGap + kLegendPad),
+          std::ceil(kLegendPad + title_h + kLegendRow * rows + kLegendPad - 4)};
+}
+
 std::vector<std::string> legend_labels(const AxesSpec& ax) {
   std::vector<std::string> labels;
   auto add = [&](const Labelling& l) {
@@ -186,18 +205,18 @@ namespace {
 // Text smaller than this is not made by shrinking a title or an axis label.
 constexpr double kMinTextSize = 9;
 
-PlacedText placed(std::string what, const std::string& text, Vec2 at, const Font& f, TextAnchor a, const Painter& p,
+PlacedText placed(std::string what, const std::string& text, Vec2 at, const Font& f, TextAnchor a, const TextMeasure& p,
                   double angle = 0) {
   PlacedText t{std::move(what), text, at, f, a, angle, {}};
   t.rect = text.empty() ? Rect{at.x, at.y, at.x, at.y} : text_rect(p.measure(text, f), at, a, angle);
   return t;
 }
 
-PlacedText x_tick_text(const Tick& t, double x, const Rect& b, const Painter& p, const Guides& g) {
+PlacedText x_tick_text(const Tick& t, double x, const Rect& b, const TextMeasure& p, const Guides& g) {
   return placed("x tick label", t.label, {x, b.bottom + 1 + g.tick_length + 3}, g.tick_font,
                 {render::HAlign::Center, render::VAlign::Top}, p);
 }
-PlacedText y_tick_text(const Tick& t, double y, const Rect& b, const Painter& p, const Guides& g) {
+PlacedText y_tick_text(const Tick& t, double y, const Rect& b, const TextMeasure& p, const Guides& g) {
   return placed("y tick label", t.label, {b.left - 1 - g.tick_length - 4, y}, g.tick_font,
                 {render::HAlign::Right, render::VAlign::Middle}, p);
 }
@@ -214,7 +233,7 @@ struct AxisSide {
 
 // The labelled ticks' texts inside the box, in order along the axis.
 std::vector<PlacedText> tick_texts(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b,
-                                   const Painter& p, const Guides& g) {
+                                   const TextMeasure& p, const Guides& g) {
   const AxisMap m = side.map(b);
   const double lo = std::min(m.p0, m.p1) - 0.01, hi = std::max(m.p0, m.p1) + 0.01;
   std::vector<std::pair<double, PlacedText>> at;
@@ -231,7 +250,7 @@ std::vector<PlacedText> tick_texts(const AxisSide& side, const std::vector<Tick>
 }
 
 // Whether two neighbouring tick labels come closer than kTickLabelGap.
-bool tick_labels_meet(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b, const Painter& p,
+bool tick_labels_meet(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b, const TextMeasure& p,
                       const Guides& g) {
   const std::vector<PlacedText> t = tick_texts(side, ticks, b, p, g);
   for (size_t i = 0; i + 1 < t.size(); ++i) {
@@ -275,7 +294,7 @@ std::vector<std::vector<Tick>> coarser_ticks(const AxisSide& side, const std::ve
 
 // The ticks, or the first coarser set whose labels stay apart in this box (the coarsest if
 // none does: the layout then refuses).
-std::vector<Tick> thin_ticks(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b, const Painter& p,
+std::vector<Tick> thin_ticks(const AxisSide& side, const std::vector<Tick>& ticks, const Rect& b, const TextMeasure& p,
                              const Guides& g) {
   if (!tick_labels_meet(side, ticks, b, p, g)) return ticks;
   const std::vector<std::vector<Tick>> coarser = coarser_ticks(side, ticks);
@@ -286,7 +305,7 @@ std::vector<Tick> thin_ticks(const AxisSide& side, const std::vector<Tick>& tick
 
 // The least length of the axis (layout units) at which the coarsest set of ticks keeps its
 // neighbouring labels apart.
-double tick_length_needed(const AxisSide& side, const std::vector<Tick>& ticks, const Painter& p, const Guides& g) {
+double tick_length_needed(const AxisSide& side, const std::vector<Tick>& ticks, const TextMeasure& p, const Guides& g) {
   const std::vector<std::vector<Tick>> coarser = coarser_ticks(side, ticks);
   const std::vector<Tick>& t = coarser.empty() ? ticks : coarser.back();
   const AxisMap m = side.map({0, 0, 1, 1});  // unit length: pixel = fraction of the axis
@@ -311,7 +330,7 @@ std::string px(double v) { return std::to_string(static_cast<long long>(std::cei
 
 // Shifts a text along x (or y) into [lo, hi], shrinking its font first if it is longer than
 // that (not below kMinTextSize). False if it cannot fit.
-bool fit_text(PlacedText& t, double lo, double hi, bool along_x, const Painter& p) {
+bool fit_text(PlacedText& t, double lo, double hi, bool along_x, const TextMeasure& p) {
   if (t.text.empty()) return true;
   auto extent = [&] { return along_x ? t.rect.width() : t.rect.height(); };
   if (extent() > hi - lo) {
@@ -337,7 +356,7 @@ bool fit_text(PlacedText& t, double lo, double hi, bool along_x, const Painter& 
 
 }  // namespace
 
-Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas_w, double canvas_h, const Painter& p,
+Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas_w, double canvas_h, const TextMeasure& p,
                    const Guides& g) {
   const AxesSpec& ax = prepared.axes;
   std::array<double, 2> xb{}, yb{};

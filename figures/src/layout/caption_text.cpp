@@ -1,90 +1,19 @@
-// The caption's computed fields (caption_fields.hpp, docs/spec.md "Caption fields").
-#include "caption_fields.hpp"
+// The caption's computed fields worked out from the elements' data (caption_text.hpp).
+#include "caption_text.hpp"
 
 #include "generated.hpp"
+#include "../load/caption_fields.hpp"
+
+#include <splinefig/figures/axes.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <optional>
-#include <set>
 
 namespace splinefig::figures::detail {
 namespace {
-
-// The value functions and how many arguments each takes.
-const std::map<std::string, int, std::less<>>& functions() {
-  static const std::map<std::string, int, std::less<>> f{
-      {"point", 1},    {"x", 1},        {"y", 1},        {"d1", 1},       {"d2", 1},   {"curvature", 1},
-      {"max_y", 2},    {"min_y", 2},    {"argmax_y", 2}, {"argmin_y", 2}, {"knot", 1}, {"count", 0},
-      {"b1", 1},       {"b2", 1},       {"item", 1},     {"k", 1},        {"db", 1},       {"points", 0}};
-  return f;
-}
-
-bool is_name(std::string_view s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
-}
-
-std::string trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return std::string(s);
-}
-
-// "fn(a, b)" into the field; an empty string if it is fine, else what is wrong.
-std::string parse_value(const std::string& text, CaptionField& f) {
-  const auto open = text.find('('), close = text.rfind(')');
-  if (open == std::string::npos || close == std::string::npos || close < open || !trim(text.substr(close + 1)).empty())
-    return "\"" + text + "\": expected FUNCTION(ARGUMENTS), e.g. \"d2(0)\"";
-  f.function = trim(text.substr(0, open));
-  const auto fn = functions().find(f.function);
-  if (fn == functions().end())
-    return "\"" + f.function + "\" is not a value function (point, x, y, d1, d2, curvature, max_y, min_y, argmax_y, "
-           "argmin_y, knot, count, item, b1, b2, k, db, points)";
-  const std::string inner = trim(text.substr(open + 1, close - open - 1));
-  std::size_t at = 0;
-  while (!inner.empty() && at <= inner.size()) {
-    const auto comma = std::min(inner.find(',', at), inner.size());
-    const std::string arg = trim(inner.substr(at, comma - at));
-    char* end = nullptr;
-    const double v = std::strtod(arg.c_str(), &end);
-    if (arg.empty() || *end != '\0' || !std::isfinite(v)) return "\"" + arg + "\" is not a finite number";
-    f.args.push_back(v);
-    at = comma + 1;
-  }
-  if (static_cast<int>(f.args.size()) != fn->second)
-    return f.function + "() takes " + std::to_string(fn->second) + " argument" + (fn->second == 1 ? "" : "s") + ", got " +
-           std::to_string(f.args.size());
-  if (f.function == "knot" || f.function == "item" || f.function == "b1" || f.function == "b2")
-    if (f.args[0] < 0 || f.args[0] != std::floor(f.args[0]) || f.args[0] > 1e9)
-      return f.function + "() takes an index 0, 1, 2, ..., got " + caption_number(f.args[0], 6);
-  if (f.args.size() == 2 && !(f.args[0] < f.args[1])) return f.function + "(a, b) needs a < b";
-  return {};
-}
-
-// Each `{=name}` of the caption, in order, with where it starts and ends.
-struct Ref {
-  std::size_t begin, end;
-  std::string name;
-};
-std::vector<Ref> references(const std::string& caption, std::string& problem) {
-  std::vector<Ref> refs;
-  for (std::size_t p = caption.find("{="); p != std::string::npos; p = caption.find("{=", p + 2)) {
-    const auto close = caption.find('}', p);
-    const std::string name = close == std::string::npos ? "" : caption.substr(p + 2, close - p - 2);
-    if (!is_name(name)) {
-      problem = "a field is written {=NAME} (letters, digits, _), at \"" + caption.substr(p, 24) + "\"";
-      return {};
-    }
-    refs.push_back({p, close + 1, name});
-  }
-  return refs;
-}
-
-// ---- Values -----------------------------------------------------------------------------
 
 struct Value {
   double v[2];
@@ -216,8 +145,8 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
     const Curve curve = make_curve(c->basis, knots, c->ends);
     const double t = f.args[0], t1 = static_cast<double>(curve.segments());
     if (!(t >= 0 && t <= t1))
-      fail(f, "value: " + fn + "(): t = " + caption_number(t, 6) + " is outside the curve's parameter range [0, " +
-                  caption_number(t1, 6) + "]");
+      fail(f, "value: " + fn + "(): t = " + tick_number(t, 6) + " is outside the curve's parameter range [0, " +
+                  tick_number(t1, 6) + "]");
     std::array<double, 2> xy{};
     splinefig::evaluate(curve, t, 0, xy);
     if (fn == "point") return {{xy[0], xy[1]}, true};
@@ -247,12 +176,12 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
   const double t0 = path->breaks.front(), t1 = path->breaks.back();
   for (double t : f.args)
     if (!(t >= t0 && t <= t1))
-      fail(f, "value: " + fn + "(): t = " + caption_number(t, 6) + " is outside the curve's parameter range [" +
-                  caption_number(t0, 6) + ", " + caption_number(t1, 6) + "]");
+      fail(f, "value: " + fn + "(): t = " + tick_number(t, 6) + " is outside the curve's parameter range [" +
+                  tick_number(t0, 6) + ", " + tick_number(t1, 6) + "]");
   const double t = f.args[0];
   if (fn == "db") {  // 20 log10 |y(t)|, as a db axis draws it
     const double y = std::abs(path->at(t).y);
-    if (!(y > 0)) fail(f, "value: db(): y is 0 at t = " + caption_number(t, 6) + " (minus infinity dB)");
+    if (!(y > 0)) fail(f, "value: db(): y is 0 at t = " + tick_number(t, 6) + " (minus infinity dB)");
     return {{20 * std::log10(y), 0}, false};
   }
   if (fn == "point" || fn == "x" || fn == "y") {
@@ -268,7 +197,7 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
     const Piece c = piece_at(*path, t, f);
     const Vec2 v = d1(c), a = d2(c);
     const double speed = std::hypot(v.x, v.y);
-    if (!(speed > 0)) fail(f, "value: curvature(): the curve stands still at t = " + caption_number(t, 6));
+    if (!(speed > 0)) fail(f, "value: curvature(): the curve stands still at t = " + tick_number(t, 6));
     return {{(v.x * a.y - v.y * a.x) / (speed * speed * speed), 0}, false};
   }
   // max_y, min_y, argmax_y, argmin_y
@@ -283,7 +212,7 @@ std::string point_list(const FigureSpec& spec, const CaptionField& f) {
   const std::vector<Vec2>* pts = input_points(find_element(spec, f));
   if (!pts || pts->empty()) fail(f, "value: \"" + f.element + "\" has no points or knots for points()");
   auto num = [&](double v) {
-    std::string s = caption_number(v, f.decimals);
+    std::string s = tick_number(v, f.decimals);
     if (s.find('.') != std::string::npos) {
       while (s.back() == '0') s.pop_back();
       if (s.back() == '.') s.pop_back();
@@ -304,53 +233,6 @@ std::string point_list(const FigureSpec& spec, const CaptionField& f) {
 
 }  // namespace
 
-std::string caption_number(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s[0] == '-') {
-    // No "−0.00": a value that rounds to zero is zero.
-    if (s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
-    else s.replace(0, 1, "\u2212");
-  }
-  return s;
-}
-
-std::vector<CaptionField> parse_caption_fields(TableReader& r, const std::string& caption, const std::string& caption_key) {
-  std::vector<CaptionField> fields;
-  std::set<std::string> names;
-  r.each_table("caption_field", [&](TableReader& s, const toml::table&) {
-    CaptionField f;
-    f.origin = s.origin("");
-    const auto name = s.opt_string("name");
-    if (!name || !is_name(*name)) s.fail("name", "needs name = \"NAME\" (letters, digits, _), used as {=NAME} in the caption");
-    if (!names.insert(*name).second) s.fail("name", "\"" + *name + "\" is declared twice");
-    f.name = *name;
-    const auto element = s.opt_string("element");
-    if (!element || element->empty())
-      s.fail("element", "needs element = \"KEY PATH\" of a plot element, e.g. \"axes[1].bezier[0]\"");
-    f.element = *element;
-    const auto value = s.opt_string("value");
-    if (!value) s.fail("value", "needs value = \"FUNCTION(ARGUMENTS)\", e.g. \"d2(0)\"");
-    if (std::string bad = parse_value(*value, f); !bad.empty()) s.fail("value", bad);
-    f.decimals = s.integer("decimals", 2, 0, 12);
-    fields.push_back(std::move(f));
-  });
-  std::string problem;
-  const std::vector<Ref> refs = references(caption, problem);
-  if (!problem.empty()) throw SpecFileError(caption_key + ": " + problem);
-  std::set<std::string> used;
-  for (const Ref& ref : refs) {
-    if (!names.count(ref.name))
-      throw SpecFileError(caption_key + ": {=" + ref.name + "} names no [[caption_field]] (declare it with name = \"" +
-                          ref.name + "\")");
-    used.insert(ref.name);
-  }
-  for (const CaptionField& f : fields)
-    if (!used.count(f.name)) throw SpecFileError(f.origin + ": \"" + f.name + "\" is declared but the caption never uses {=" + f.name + "}");
-  return fields;
-}
-
 std::string caption_text(const FigureSpec& spec) {
   if (spec.caption_fields.empty()) return spec.caption;
   std::string problem;
@@ -362,11 +244,11 @@ std::string caption_text(const FigureSpec& spec) {
       continue;
     }
     const Value v = evaluate(spec, f);
-    std::string text = caption_number(v.v[0], f.decimals);
+    std::string text = tick_number(v.v[0], f.decimals);
     if (v.vector) {  // "(x, y)", built by appends (GCC 12 -Wrestrict, PR 105329, on "(" + s)
       text.insert(text.begin(), '(');
       text += ", ";
-      text += caption_number(v.v[1], f.decimals);
+      text += tick_number(v.v[1], f.decimals);
       text += ')';
     }
     values[f.name] = std::move(text);

@@ -1,8 +1,6 @@
 // Point data from CSV files and from the [data] table of a spec (see spec_data.hpp).
 #include "spec_data.hpp"
 
-#include "toml_reader.hpp"
-
 #include <splinefig/spline/points_csv.hpp>
 
 #include <filesystem>
@@ -99,6 +97,10 @@ std::optional<std::vector<Vec2>> data_points(TableReader& r, std::string_view ke
     return it->second;
   }
   return std::nullopt;
+}
+
+std::optional<std::vector<Vec2>> SpecData::points(TableReader& r, std::string_view key) const {
+  return data_points(r, key, *this);
 }
 
 }  // namespace splinefig::figures::detail

@@ -1,7 +1,7 @@
 // Plot elements of an axes panel: curves, kernels, series, fills, text, annotations,
 // reference lines and images, mapped from data to pixels and clipped to the plot box.
 #include "clip_path.hpp"
-#include "plot.hpp"
+#include "draw.hpp"
 
 #include <splinefig/figures/palette.hpp>
 #include <splinefig/spline/arclength.hpp>

@@ -1,17 +1,14 @@
 // The figure display list and its rendering (see painter.hpp).
 #include "painter.hpp"
 
-#include "rich_text.hpp"
+#include "../text/rich_text.hpp"
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/image/srgb.hpp>
 #include <splinefig/spline/kernel.hpp>
 
 #include <algorithm>
-#include <map>
-#include <mutex>
 #include <numbers>
-#include <tuple>
 #include <cmath>
 #include <stdexcept>
 
@@ -44,61 +41,12 @@ void Painter::circle(Vec2 centre, double r, std::optional<Color> fill, std::opti
 void Painter::marker(render::Marker shape, Vec2 centre, double size, Color c) {
   add(MarkerOp{shape, centre, size, c});
 }
-Font Painter::resolved(const Font& f) const {
-  Font r = f;
-  if (!r.family) r.family = family_;
-  return r;
-}
 void Painter::text(std::string s, Vec2 at, const Font& f, TextAnchor a, double angle) {
   if (s.empty()) return;
   add(TextOp{std::move(s), at, resolved(f), a, angle});
 }
 void Painter::image(Raster r, double x0, double y0, double x1, double y1) {
   add(ImageOp{std::move(r), x0, y0, x1, y1});
-}
-
-namespace {
-
-render::TextStyle plain_style(double size, const Font& f, bool italic) {
-  render::TextStyle t;
-  t.size = size;
-  t.color = f.color;
-  t.weight = f.bold ? render::FontWeight::Bold : render::FontWeight::Normal;
-  t.family = f.family.value_or(render::FontFamily::Sans);
-  t.italic = italic;
-  return t;
-}
-
-// Plain-text extent at an output size, in output pixels. Shaping is cached by the renderer;
-// figures repeat their labels, so extents are cached here too.
-render::TextExtent measure_plain(const std::string& text, double size, const Font& f, bool italic) {
-  static std::mutex mutex;
-  static std::map<std::tuple<std::string, double, int, int>, render::TextExtent> cache;
-  const int face = static_cast<int>(f.family.value_or(render::FontFamily::Sans)) * 4 + (f.bold ? 2 : 0) + (italic ? 1 : 0);
-  auto key = std::make_tuple(text, size, face, 0);
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (auto it = cache.find(key); it != cache.end()) return it->second;
-  }
-  render::TextExtent e = render::measure_text(text, plain_style(size, f, italic));
-  std::lock_guard<std::mutex> lock(mutex);
-  if (cache.size() > 100000) cache.clear();
-  cache[key] = e;
-  return e;
-}
-
-}  // namespace
-
-render::TextExtent Painter::measure(const std::string& s, const Font& font) const {
-  const Font f = resolved(font);
-  auto key = std::make_tuple(s, f.size, f.bold, static_cast<int>(*f.family));
-  if (auto it = cache_.find(key); it != cache_.end()) return it->second;
-  // Measured at 1x whatever the output scale, so that the layout (and every pixel box)
-  // scales exactly; drawing aligns each label with its extent at the output size.
-  RichText rt = set_text(s, f.size, [&](const std::string& t, double size, bool italic) { return measure_plain(t, size, f, italic); });
-  render::TextExtent e{rt.width, rt.ascent, rt.descent};
-  cache_[key] = e;
-  return e;
 }
 
 Vec2 raster_size(const Raster& r) {

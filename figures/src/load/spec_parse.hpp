@@ -4,6 +4,9 @@
 
 namespace splinefig::figures::detail {
 
+// The spec of `text` as parse_spec() reads it (spec.hpp), its caption fields not yet worked out.
+FigureSpec read_spec(std::string_view text, const std::string& name, const std::string& base_dir);
+
 struct ParseContext {
   std::string file;      // name in messages
   std::string base_dir;  // resolves relative image paths

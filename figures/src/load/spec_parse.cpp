@@ -2,6 +2,7 @@
 // Items keep the document order (by source line), so later items draw over earlier ones.
 #include "spec_parse.hpp"
 #include "caption_fields.hpp"
+#include "spec_data.hpp"
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/renderer/renderer.hpp>
@@ -297,8 +298,9 @@ void place_panels(FigureSpec& spec) {
 
 }  // namespace
 
-FigureSpec parse_spec(std::string_view text, const std::string& name, const std::string& base_dir) {
-  using namespace detail;
+namespace detail {
+
+FigureSpec read_spec(std::string_view text, const std::string& name, const std::string& base_dir) {
   toml::table doc;
   if (std::string bad = utf8_problem(text, name); !bad.empty()) throw SpecFileError(bad);
   if (std::string bad = key_depth_problem(text, name); !bad.empty()) throw SpecFileError(bad);
@@ -351,37 +353,9 @@ FigureSpec parse_spec(std::string_view text, const std::string& name, const std:
   }
 
   place_panels(spec);
-  caption_text(spec);  // every caption field names an element it applies to
   return spec;
 }
 
-// The rules for a spec read by name, the same for the command line, `figures` and Python: a
-// regular file (a directory is no empty spec; a FIFO or /dev/zero would block or never end),
-// readable, at most kMaxSpecBytes, read no further than that even if it grows meanwhile.
-FigureSpec load_spec(const std::string& path) {
-  namespace fs = std::filesystem;
-  if (path.find('\0') != std::string::npos) throw SpecFileError("a spec path holding a NUL character");
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (!fs::exists(st)) {
-    const int err = ec ? ec.value() : ENOENT;
-    throw SpecFileError(path + ": cannot read the spec file (" + std::strerror(err) + ")");
-  }
-  if (fs::is_directory(st)) throw SpecFileError(path + ": is a directory, not a file");
-  if (!fs::is_regular_file(st)) throw SpecFileError(path + ": not a regular file (a FIFO, socket or device)");
-  if (const auto bytes = fs::file_size(path, ec); !ec && bytes > kMaxSpecBytes)
-    throw SpecFileError(path + ": the spec file has " + std::to_string(bytes) + " bytes (limit 64 MiB)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SpecFileError(path + ": cannot read the spec file (" + std::strerror(errno ? errno : EIO) + ")");
-  std::string text;
-  std::array<char, 1 << 16> buf;
-  while (in.read(buf.data(), buf.size()) || in.gcount() > 0) {
-    text.append(buf.data(), static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxSpecBytes) throw SpecFileError(path + ": the spec file has more than 64 MiB (limit 64 MiB)");
-  }
-  if (in.bad()) throw SpecFileError(path + ": cannot read the spec file (a read error)");
-  std::string dir = fs::path(path).parent_path().string();
-  return parse_spec(text, path, dir.empty() ? "." : dir);
-}
+}  // namespace detail
 
 }  // namespace splinefig::figures

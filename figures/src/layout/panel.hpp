@@ -1,14 +1,15 @@
 #pragma once
-// Internal: drawing one axes panel. Layout (ranges, box, ticks) in plot_layout.cpp, plot
-// elements in plot_elements.cpp, guides (frame, ticks, labels, legend) in plot_guides.cpp.
+// Internal: one axes panel laid out: its generated elements computed and its curves built
+// (plot_prepare.cpp), its ranges, plot box, ticks and the guides' texts placed (plot_layout.cpp),
+// the outline of a fill under an element (plot_fill.cpp). Drawing it is paint/draw.hpp's.
 // All coordinates here are layout units (1x pixels); the painter scales them.
 #include "generated.hpp"
-#include "painter.hpp"
+#include "../naming.hpp"
+#include "../text/measure.hpp"
 
-#include <splinefig/figures/figure.hpp>
 #include <splinefig/figures/sampling.hpp>
 
-#include <cstdint>
+#include <array>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -22,20 +23,6 @@ struct Rect {
   double height() const { return bottom - top; }
   bool contains(Vec2 p) const { return p.x >= left && p.x <= right && p.y >= top && p.y <= bottom; }
   Rect inflated(double d) const { return {left - d, top - d, right + d, bottom + d}; }
-};
-
-// Where data has been drawn, on a 1-unit grid: labels and the legend go where it is empty.
-class Occupancy {
- public:
-  Occupancy(int width, int height);
-  void mark_polyline(const std::vector<Vec2>& pts, double radius);
-  void mark_point(Vec2 p, double radius);
-  void mark_rect(const Rect& r, int weight = 1);
-  long count(const Rect& r) const;  // marked cells inside r
-
- private:
-  int w_, h_;
-  std::vector<std::uint16_t> cells_;
 };
 
 // The look of the guides (docs/figures.md, house style).
@@ -80,16 +67,6 @@ struct Panel {
   std::array<double, 2> x_range{}, y_range{};
 };
 
-// A legend entry or an inline label's source: what to draw as the sample.
-struct Entry {
-  std::string label;
-  Color color;
-  render::StrokeStyle style;
-  bool line = true, markers = false, patch = false;
-  render::Marker marker = render::Marker::Circle;
-  double marker_size = 6;
-};
-
 // An axes ready to be laid out and drawn: its generated elements replaced by what they
 // generate (generated.hpp) and each spline curve built once.
 struct PreparedAxes {
@@ -118,46 +95,28 @@ struct LayoutRefused : std::runtime_error {
 // text box measured, ticks thinned where their labels would meet, the box shrunk to leave room
 // for the texts; throws LayoutRefused when the texts cannot all be placed apart from each
 // other and inside the canvas.
-Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas_w, double canvas_h, const Painter& p,
+Panel layout_panel(const PreparedAxes& prepared, const Rect& cell, double canvas_w, double canvas_h, const TextMeasure& p,
                    const Guides& g);
 // The smallest plot box a panel can have (each way).
 inline constexpr double kMinPlotBox = 24;
 // The least gap between neighbouring tick labels, and between other text boxes.
 inline constexpr double kTickLabelGap = 4, kTextGap = 2;
 
-// Draws grid and zero lines (under the data).
-void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
-// Draws the elements; returns the series for index.json and the legend entries.
-void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occupancy& occ,
-                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend);
-// Frame, ticks, tick labels, axis labels, title (over the data), then the legend.
-void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
-// Returns the legend's rectangle (none when nothing is drawn).
-std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
-                                Occupancy& occ, const Guides& g);
-// The inset of a legend inside the plot box.
+// The inset of a legend inside the plot box; its padding, a sample's width, the gap after it,
+// a row's height and the gap between columns.
 inline constexpr double kLegendInset = 10;
+inline constexpr double kLegendPad = 8, kLegendSample = 28, kLegendGap = 8, kLegendRow = 19, kLegendColumnGap = 16;
 // The legend's width and height for entries with these labels.
-std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const Painter& p,
+std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const TextMeasure& p,
                                   const Guides& g);
 // The labels of the elements that go to the legend (what draw_elements() will make entries of).
 std::vector<std::string> legend_labels(const AxesSpec& ax);
 // The gap between the plot box and a legend outside it.
 inline constexpr double kLegendOutsideGap = 12;
 
-// Places text next to one of the candidate points (pixels, best first) where it covers the
-// least drawn data and stays inside `box`; marks the chosen spot as used and returns the
-// text's (left, baseline) anchor.
-Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>& candidates, const Rect& box,
-                 const Painter& p, Occupancy& occ, double distance = 7);
-
 // The pixel outline of a fill with `under` (plot_fill.cpp): the element's samples, closed by the
 // baseline or by the `to` element's samples reversed.
 std::vector<Vec2> fill_under_polygon(const PreparedAxes& prepared, const FillElement& f, const PixelMap& map,
                                      double tol);
-
-// Polyline clipping against a rectangle: the runs inside.
-std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& pts, bool closed, const Rect& r);
-std::vector<Vec2> clip_polygon(const std::vector<Vec2>& pts, const Rect& r);
 
 }  // namespace splinefig::figures::detail

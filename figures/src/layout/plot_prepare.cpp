@@ -1,5 +1,5 @@
-// An axes prepared for layout: generated elements computed, curves built (see plot.hpp).
-#include "plot.hpp"
+// An axes prepared for layout: generated elements computed, curves built (see panel.hpp).
+#include "panel.hpp"
 
 namespace splinefig::figures::detail {
 

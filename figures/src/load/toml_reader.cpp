@@ -1,7 +1,7 @@
 // Checked access to TOML tables of figure specs (see toml_reader.hpp).
 #include "toml_reader.hpp"
 
-#include "rich_text.hpp"
+#include "../text/rich_text.hpp"
 
 #include <splinefig/spline/points_csv.hpp>
 
@@ -388,7 +388,7 @@ std::optional<Vec2> TableReader::opt_point(std::string_view key) {
 
 std::vector<Vec2> TableReader::points(std::string_view key) {
   if (data_)
-    if (auto p = data_points(*this, key, *data_)) return std::move(*p);
+    if (auto p = data_->points(*this, key)) return std::move(*p);
   std::vector<Vec2> out;
   const toml::node* n = node(key);
   if (!n) return out;

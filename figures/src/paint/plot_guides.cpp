@@ -1,6 +1,6 @@
 // Guides of an axes panel: grid, zero lines, frame, ticks and their labels, axis labels,
 // the panel title, inline label placement and the legend.
-#include "plot.hpp"
+#include "draw.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -117,26 +117,9 @@ Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>
 }
 
 namespace {
-constexpr double kPad = 8, kSample = 28, kGap = 8, kRow = 19, kColumnGap = 16;
+constexpr double kPad = kLegendPad, kSample = kLegendSample, kGap = kLegendGap, kRow = kLegendRow,
+                 kColumnGap = kLegendColumnGap;
 }  // namespace
-
-std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const Painter& p,
-                                  const Guides& g) {
-  const Font& f = g.legend_font;
-  double text_w = 0;
-  for (const auto& l : labels) text_w = std::max(text_w, p.measure(l, f).width);
-  Font tf = f;
-  tf.bold = true;
-  double title_h = 0;
-  if (!ax.legend_title.empty()) {
-    text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - kSample - kGap);
-    title_h = kRow;
-  }
-  const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(labels.size())));
-  const int rows = static_cast<int>((labels.size() + cols - 1) / cols);
-  const double col_w = kSample + kGap + text_w + kColumnGap;
-  return {std::ceil(kPad + cols * col_w - kColumnGap + kPad), std::ceil(kPad + title_h + kRow * rows + kPad - 4)};
-}
 
 std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
                                 Occupancy& occ, const Guides& g) {

@@ -3,7 +3,7 @@
 // split where it crosses a side of the rectangle (a cubic restricted to a parameter interval
 // is again a cubic: de Casteljau), the sub-pieces inside are kept and consecutive ones joined,
 // so the clipped curve stays exact.
-#include "plot.hpp"
+#include "../layout/panel.hpp"
 
 #include <splinefig/renderer/path.hpp>
 

@@ -1,15 +1,15 @@
 #pragma once
 // Internal: a display list in layout units (1x pixels) that is scaled to the output size
-// when it becomes one renderer scene; raster images are scene items like the rest.
+// when it becomes one renderer scene; raster images are scene items like the rest. It
+// measures labels as it sets them (text/measure.hpp).
+#include "../naming.hpp"
+#include "../text/measure.hpp"
+
 #include <splinefig/figures/spec.hpp>
 #include <splinefig/renderer/path.hpp>
 
 #include <cstdint>
-#include <map>
-#include <new>
-#include <stdexcept>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -57,11 +57,9 @@ struct ImageOp {
 };
 using Op = std::variant<StrokeOp, PathStrokeOp, FillOp, CircleOp, MarkerOp, TextOp, ImageOp>;
 
-class Painter {
+class Painter : public TextMeasure {
  public:
-  explicit Painter(double scale, render::FontFamily family = render::FontFamily::Sans)
-      : scale_(scale), family_(family) {}
-  double scale() const { return scale_; }
+  explicit Painter(double scale, render::FontFamily family = render::FontFamily::Sans) : TextMeasure(scale, family) {}
 
   void stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c);
   void stroke(render::Path path, const render::StrokeStyle& s, Color c);
@@ -73,9 +71,6 @@ class Painter {
   void text(std::string s, Vec2 at, const Font& f, TextAnchor a, double angle = 0);
   void image(Raster r, double x0, double y0, double x1, double y1);
 
-  // Extent of a label (rich_text.hpp markup) in layout units, measured at 1x.
-  render::TextExtent measure(const std::string& s, const Font& f) const;
-
   const std::vector<Op>& ops() const { return ops_; }
 
   // "FILE:LINE: KEY" of the spec table whose drawing follows; every op records it, so that an
@@ -84,40 +79,12 @@ class Painter {
   const std::string& origin_of(std::size_t op) const;
 
  private:
-  Font resolved(const Font& f) const;
   void add(Op op);
 
-  double scale_;
-  render::FontFamily family_;
   std::vector<Op> ops_;
   std::vector<std::string> origins_{std::string()};
   std::vector<std::uint32_t> op_origin_;  // index into origins_, per op
-  mutable std::map<std::tuple<std::string, double, bool, int>, render::TextExtent> cache_;
 };
-
-// An error about one key of the table being drawn (e.g. an axes table's x_range).
-struct KeyError : std::invalid_argument {
-  KeyError(std::string k, const std::string& what) : std::invalid_argument(what), key(std::move(k)) {}
-  std::string key;
-};
-
-// Runs f(); an error it throws other than SpecFileError becomes a SpecFileError
-// "ORIGIN: what" (one line), `origin` being "FILE:LINE: KEY" of the spec table being drawn; a
-// KeyError becomes "ORIGIN.KEY: what".
-template <class F>
-void naming_origin(const std::string& origin, F&& f) {
-  try {
-    f();
-  } catch (const SpecFileError&) {
-    throw;
-  } catch (const KeyError& e) {
-    throw SpecFileError(origin.empty() ? e.key + ": " + e.what() : origin + "." + e.key + ": " + e.what());
-  } catch (const std::bad_alloc&) {
-    throw SpecFileError(origin + ": out of memory");
-  } catch (const std::exception& e) {
-    throw SpecFileError(origin.empty() ? std::string(e.what()) : origin + ": " + e.what());
-  }
-}
 
 // Width and height of a raster in its own pixels (reads the file header if needed).
 Vec2 raster_size(const Raster& r);

@@ -1,0 +1,55 @@
+#pragma once
+// What a laid-out figure tells besides its pixels (docs/figures.md): where each axes' plot box
+// is in output pixels, its data ranges and ticks, the colour and look of every labelled series
+// and the boxes of its texts, for image-based tests and index.json.
+#include <splinefig/figures/axes.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace splinefig::figures {
+
+struct SeriesInfo {
+  std::string label;
+  std::string color;  // "#rrggbb"
+  std::string kind;   // curve, kernel, series, polygon, fill, rule
+  // How else it is drawn, so a reader can tell it from the others without colour: its dash
+  // pattern (on/off lengths in pixels at 1x; empty: solid, or no line), whether it is drawn as
+  // a line, and its marker ("circle", "square", ...; empty: none).
+  std::vector<double> dash = {};
+  bool line = true;
+  std::string marker = {};
+  bool piece = false;  // a labelled piece of a kernel drawn in several colours
+};
+
+// A text the layout placed (or a legend, as one box): what it is and the rectangle it covers
+// (left, top, right, bottom in output pixels: its advance width, its ink's height).
+struct TextBox {
+  std::string what;  // "title", "x label", "y label", "x tick label", "y tick label", "legend", "text"
+  std::array<double, 4> box{};
+};
+
+struct AxesInfo {
+  std::array<double, 4> pixel_box{};  // left, top, right, bottom in output pixels
+  std::array<double, 2> x_range{}, y_range{};
+  Scale x_scale = Scale::Linear, y_scale = Scale::Linear;
+  std::vector<SeriesInfo> series;
+  std::vector<double> x_ticks, y_ticks;
+  // Every text box of the panel: the guides' texts, the legend, the elements' texts (inline
+  // labels, [[axes.text]], annotations); the layout keeps the guides' and the legend apart
+  // and inside the canvas.
+  std::vector<TextBox> text_boxes;
+
+  AxisMap x_map() const;  // data -> output pixels, as docs/conventions.md states
+  AxisMap y_map() const;
+};
+
+struct FigureInfo {
+  std::string name, title, caption;
+  int width = 0, height = 0;  // output pixels
+  std::vector<AxesInfo> axes;
+  std::vector<std::string> files;  // filled in by whoever writes the files
+};
+
+}  // namespace splinefig::figures

@@ -1,0 +1,38 @@
+#pragma once
+// Internal: errors named by the spec table they come from. Whatever is found wrong after
+// loading (while laying out or painting) names the table of the item or element being worked
+// on, "FILE:LINE: KEY: what", as the loader's own errors do.
+#include <splinefig/figures/spec.hpp>
+
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace splinefig::figures::detail {
+
+// An error about one key of the table being drawn (e.g. an axes table's x_range).
+struct KeyError : std::invalid_argument {
+  KeyError(std::string k, const std::string& what) : std::invalid_argument(what), key(std::move(k)) {}
+  std::string key;
+};
+
+// Runs f(); an error it throws other than SpecFileError becomes a SpecFileError
+// "ORIGIN: what" (one line), `origin` being "FILE:LINE: KEY" of the spec table being drawn; a
+// KeyError becomes "ORIGIN.KEY: what".
+template <class F>
+void naming_origin(const std::string& origin, F&& f) {
+  try {
+    f();
+  } catch (const SpecFileError&) {
+    throw;
+  } catch (const KeyError& e) {
+    throw SpecFileError(origin.empty() ? e.key + ": " + e.what() : origin + "." + e.key + ": " + e.what());
+  } catch (const std::bad_alloc&) {
+    throw SpecFileError(origin + ": out of memory");
+  } catch (const std::exception& e) {
+    throw SpecFileError(origin.empty() ? std::string(e.what()) : origin + ": " + e.what());
+  }
+}
+
+}  // namespace splinefig::figures::detail

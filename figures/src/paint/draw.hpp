@@ -1,0 +1,64 @@
+#pragma once
+// Internal: drawing one laid-out axes panel (layout/panel.hpp) into the painter's display list:
+// its elements in plot_elements.cpp, its guides (grid, frame, ticks, labels, legend) in
+// plot_guides.cpp, the occupancy grid and clipping in plot_geometry.cpp and clip_path.hpp.
+// All coordinates here are layout units (1x pixels); the painter scales them.
+#include "painter.hpp"
+#include "../layout/panel.hpp"
+
+#include <splinefig/figures/figure_info.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace splinefig::figures::detail {
+
+// Where data has been drawn, on a 1-unit grid: labels and the legend go where it is empty.
+class Occupancy {
+ public:
+  Occupancy(int width, int height);
+  void mark_polyline(const std::vector<Vec2>& pts, double radius);
+  void mark_point(Vec2 p, double radius);
+  void mark_rect(const Rect& r, int weight = 1);
+  long count(const Rect& r) const;  // marked cells inside r
+
+ private:
+  int w_, h_;
+  std::vector<std::uint16_t> cells_;
+};
+
+// A legend entry or an inline label's source: what to draw as the sample.
+struct Entry {
+  std::string label;
+  Color color;
+  render::StrokeStyle style;
+  bool line = true, markers = false, patch = false;
+  render::Marker marker = render::Marker::Circle;
+  double marker_size = 6;
+};
+
+// Draws grid and zero lines (under the data).
+void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
+// Draws the elements; returns the series for index.json and the legend entries.
+void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occupancy& occ,
+                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend);
+// Frame, ticks, tick labels, axis labels, title (over the data), then the legend.
+void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
+// Returns the legend's rectangle (none when nothing is drawn).
+std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
+                                Occupancy& occ, const Guides& g);
+
+// Places text next to one of the candidate points (pixels, best first) where it covers the
+// least drawn data and stays inside `box`; marks the chosen spot as used and returns the
+// text's (left, baseline) anchor.
+Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>& candidates, const Rect& box,
+                 const Painter& p, Occupancy& occ, double distance = 7);
+
+// Polyline clipping against a rectangle: the runs inside.
+std::vector<std::vector<Vec2>> clip_polyline(const std::vector<Vec2>& pts, bool closed, const Rect& r);
+std::vector<Vec2> clip_polygon(const std::vector<Vec2>& pts, const Rect& r);
+
+}  // namespace splinefig::figures::detail
