@@ -45,6 +45,8 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"canvas side, at 1x and after `--scale`", std::to_string(f::kMaxCanvasSide) + " px"},
       {"canvas pixels, at 1x and after `--scale`", power_of_two(f::kMaxCanvasPixels)},
       {"spec file size", std::to_string(f::kMaxSpecBytes >> 20) + " MiB"},
+      {"parts of a dotted key or table header (`a.b.c`), checked by a scan before the TOML parser runs", std::to_string(f::kMaxKeyParts)},
+      {"arrays and inline tables nested in each other (`[[[`, `{a = {`), checked by the same scan", std::to_string(f::kMaxValueNesting)},
       {"text and title font sizes, at 1x and after `--scale`", std::to_string(int(f::kMaxFontSize)) + " px"},
       {"ticks per axis (explicit, or from `*_tick_step`)", std::to_string(f::kMaxTicks)},
       {"`x_marks`, `y_marks`, curve `marks`", std::to_string(f::kMaxMarks)},

@@ -130,6 +130,53 @@ TEST_CASE("a 1000-part table header is refused cleanly on a 256 KiB stack") {
   CHECK_FALSE(fs::exists(dir / "deep.png"));
 }
 
+// The parser recurses into every array and inline table too, a few KiB of stack a level: under
+// a 256 KiB stack 150 nested inline tables or 250 nested arrays (toml++ allows 256) died by
+// SIGSEGV with nothing said. The scan refuses more than 16 levels; 16 parse on that stack.
+TEST_CASE("arrays and inline tables nested more than 16 deep are refused by the scan, on a 256 KiB stack too") {
+  const fs::path dir = scratch();
+  auto nested = [](int n, const std::string& open, const std::string& inner, const std::string& close) {
+    std::string s;
+    for (int i = 0; i < n; ++i) s += open;
+    s += inner;
+    for (int i = 0; i < n; ++i) s += close;
+    return s;
+  };
+  const std::string says = ": arrays and inline tables nested more than 16 deep (the limit of value nesting)";
+  struct Case {
+    std::string name, text, err;
+  };
+  const std::vector<Case> cases{
+      {"arrays", "title = \"t\"\na = " + nested(250, "[", "", "]") + "\n", "arrays.toml:2" + says},
+      {"tables", "a = " + nested(150, "{b = ", "1", "}") + "\n", "tables.toml:1" + says},
+      {"mixed", "a = " + nested(9, "[{b = ", "1", "}]") + "\n", "mixed.toml:1" + says},
+      {"lines", "a = [\n" + nested(17, "[\n", "", "]\n") + "]\n", "lines.toml:17" + says},
+      {"huge", "a = " + nested(100000, "[", "", "]") + "\n", "huge.toml:1" + says},
+      // 16 levels reach the parser and the spec reader, which names the key.
+      {"arrays16", "a = " + nested(16, "[", "", "]") + "\n", "arrays16.toml:1: a: unknown key"},
+      {"tables16", "a = " + nested(16, "{b = ", "1", "}") + "\n", "tables16.toml:1: a: unknown key"},
+      // Brackets in strings and comments are no nesting.
+      {"quoted", "title = \"" + nested(40, "[", "", "]") + "\"\n# " + nested(40, "{", "", "}") + "\nz = 1\n",
+       "quoted.toml:3: z: unknown key"},
+  };
+#if defined(__SANITIZE_ADDRESS__)
+  const std::string stack = "";  // the sanitizer's frames are several times larger
+#else
+  const std::string stack = "ulimit -s 256";
+#endif
+  for (const Case& c : cases) {
+    write_file(dir / (c.name + ".toml"), c.text);
+    const int status = run_shell(dir, stack, "render " + c.name + ".toml -o out.png");
+    const std::string err = splinefig::test::slurp(dir / "err.txt");
+    INFO(c.name << ": " << err);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 2);
+    CHECK(err == "splinefig render: " + c.err + "\n");
+    CHECK_FALSE(fs::exists(dir / "out.png"));
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a pixel filter the renderer refuses is an error at load, with the spec's file, line and key") {
   check_refused("wide_filter", "[canvas]\nwidth = 20\nheight = 20\nfilter = \"uniform-bspline:degree=12\"\n",
                 "wide_filter.toml:4: canvas.filter: pixel filter 'uniform-bspline:degree=12': support wider than 8 px");
@@ -156,6 +203,43 @@ TEST_CASE("a write over the file-size limit (ulimit -f) is a one-line error and 
   CHECK(left == std::vector<std::string>{"big.toml", "err.txt"});
 }
 
+// The other writers: every output format, figures, resample and diff's images.
+TEST_CASE("every command's file write over the file-size limit is a one-line error and leaves no temporary") {
+  const fs::path dir = scratch();
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/bias.toml";
+  const std::string png = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/reference/renderer/fills.png";
+  struct Case {
+    std::string args, err;
+    int code;
+  };
+  const std::string specs = " --specs " + std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs";
+  for (const Case& c :
+       {Case{"render " + spec + " -o keep.svg", "splinefig render: keep.svg: write failed (File too large)\n", 2},
+        {"render " + spec + " -o keep.pdf", "splinefig render: keep.pdf: write failed (File too large)\n", 2},
+        {"render " + spec + " -o keep.exr", "splinefig render: keep.exr: write failed (File too large)\n", 2},
+        {"figures --out figs --only bias" + specs,
+         "splinefig figures: " + std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/bias.toml: figs/bias.png: write failed (File too "
+         "large)\nsplinefig figures: 1 of 1 figures failed\n", 2},
+        {"resample " + png + " -o keep.png --filter bspline --size 600x600",
+         "splinefig resample: keep.png: write failed (File too large)\n", 2},
+        {"diff " + png + " " + png + " --triptych keep.png",
+         "splinefig diff: cannot write keep.png: write failed (File too large)\n", 4}}) {
+    fs::create_directories(dir / "figs");
+    const int status = run_shell(dir, "ulimit -f 1", c.args);
+    const std::string err = splinefig::test::slurp(dir / "err.txt");
+    INFO(c.args << ": " << err);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == c.code);
+    CHECK(err == c.err);
+    std::vector<std::string> left;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) left.push_back(e.path().lexically_relative(dir).string());
+    std::sort(left.begin(), left.end());
+    CHECK(left == std::vector<std::string>{"err.txt", "figs"});
+    fs::remove(dir / "err.txt");
+  }
+  fs::remove_all(dir);
+}
+
 TEST_CASE("a command whose standard output cannot be written says so and fails, never exits 0") {
   const fs::path dir = scratch();
   const std::string png = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/reference/renderer/fills.png";
@@ -163,8 +247,20 @@ TEST_CASE("a command whose standard output cannot be written says so and fails, 
     std::string args, who;
     int code;
   };
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/bias.toml";
+  write_file(dir / "knots.csv", "0,0\n1,2\n3,1\n4,4\n");
+  // Every command, its help, the hidden reference options and each way a file reaches stdout.
   for (const Case& c : {Case{"version", "splinefig version", 2}, {"--version", "splinefig", 2}, {"--help", "splinefig", 2},
-                        {"kernel --basis bspline", "splinefig kernel", 2}, {"diff " + png + " " + png, "splinefig diff", 4},
+                        {"render --help", "splinefig", 2}, {"version --help", "splinefig", 2}, {"--help-man", "splinefig", 2},
+                        {"--completion bash", "splinefig", 2}, {"--completion zsh", "splinefig", 2},
+                        {"kernel --basis bspline", "splinefig kernel", 2}, {"kernel --basis bspline --report", "splinefig kernel", 2},
+                        {"eval --basis bspline knots.csv", "splinefig eval", 2},
+                        {"eval --basis bspline --spacing arclength --count 5 knots.csv", "splinefig eval", 2},
+                        {"interp knots.csv", "splinefig interp", 2}, {"interp --output bezier knots.csv", "splinefig interp", 2},
+                        {"render " + spec + " -o -", "splinefig render", 2}, {"render " + spec + " -o - --format svg", "splinefig render", 2},
+                        {"resample " + png + " -o - --filter bspline --size 8x8", "splinefig resample", 2},
+                        {"figures --out figs --only bias", "splinefig figures", 2},
+                        {"diff " + png + " " + png, "splinefig diff", 4},
                         {"diff --json " + png + " " + png, "splinefig diff", 4}, {"diff -v " + png + " " + png, "splinefig diff", 4}})
     for (const std::string redirect : {">/dev/full", ">&-"}) {
       const int status = run_shell(dir, "", c.args, redirect);

@@ -39,7 +39,7 @@ const char* type_name(toml::node_type t) {
 }  // namespace
 
 std::string key_depth_problem(std::string_view text, const std::string& file) {
-  std::size_t line = 1, parts = 0, i = 0;
+  std::size_t line = 1, parts = 0, i = 0, depth = 0;  // depth: open brackets and braces
   bool after_dot = false;  // a '.' since the chain's last atom
   auto atom = [&]() {
     parts = after_dot ? parts + 1 : 1;
@@ -89,6 +89,13 @@ std::string key_depth_problem(std::string_view text, const std::string& file) {
       continue;
     } else if (c != ' ' && c != '\t') {
       if (c == '\n') ++line;
+      if (c == '[' || c == '{') {
+        if (++depth > kMaxValueNesting)
+          return file + ":" + std::to_string(line) + ": arrays and inline tables nested more than " +
+                 std::to_string(kMaxValueNesting) + " deep (the limit of value nesting)";
+      } else if ((c == ']' || c == '}') && depth > 0) {
+        --depth;
+      }
       parts = 0;
       after_dot = false;
     }

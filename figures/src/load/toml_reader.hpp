@@ -124,6 +124,9 @@ std::string utf8_problem(std::string_view text, const std::string& file);
 // one nested table per part, recursively, so 50000 parts overflowed the stack. Strings and
 // comments are skipped as TOML reads them; a number such as 1.5 counts as two parts, well within
 // the limit. "FILE:LINE: a dotted key of more than 64 parts" on the first such chain, else empty.
+// Arrays and inline tables (and table headers' brackets) open inside each other more than
+// kMaxValueNesting deep are refused too: the parser recurses into each, a few KiB of stack a
+// level, and 150 inline tables (toml++ allows 256) overflowed a 256 KiB stack.
 std::string key_depth_problem(std::string_view text, const std::string& file);
 
 }  // namespace splinefig::figures::detail

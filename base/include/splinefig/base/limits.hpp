@@ -54,6 +54,7 @@ inline constexpr std::uint64_t kMaxImageValuesPerByte = std::uint64_t(1) << 14;
 // Figure specs, checked where they are loaded, before any work.
 inline constexpr std::size_t kMaxSpecBytes = std::size_t(1) << 26;  // a spec file: 64 MiB, held whole
 inline constexpr std::size_t kMaxKeyParts = 64;       // parts of a dotted key or table header (the parser recurses)
+inline constexpr std::size_t kMaxValueNesting = 16;   // arrays and inline tables inside each other (the parser recurses)
 inline constexpr std::size_t kMaxMarks = 100000;      // x_marks, y_marks, curve marks: each a drawn shape
 inline constexpr std::size_t kMaxBezierPoints = 128;  // control points of one [[axes.bezier]] (degree 127)
 inline constexpr int kMaxTicks = 1000;                // ticks of one axis, each label measured
