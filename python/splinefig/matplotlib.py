@@ -28,7 +28,7 @@ from matplotlib.path import Path
 from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
 
-from . import Scene, _core
+from . import Scene
 
 __all__ = ["FigureCanvasSplinefig", "RendererSplinefig", "FigureCanvas", "FigureManager", "BLEND", "THREADS"]
 
@@ -472,9 +472,9 @@ class RendererSplinefig(RendererBase):
         dash_off, dash_list = gc.get_dashes()
         stroke_rgba = tuple(gc.get_rgb())
         flip = self._flip()
-        H = self.height
         styles: dict = {}
         bases: dict = {}
+        self._gc_join, self._gc_cap = gc.get_joinstyle(), _CAPS.get(gc.get_capstyle(), "butt")
         core = t.core
         self._for_shapes(t)
 
@@ -495,6 +495,9 @@ class RendererSplinefig(RendererBase):
                 styles[key] = st
             return st
 
+        if self._collection_at_once(t, path_ids, N, toffsets, facecolors, edgecolors, linewidths, linestyles, forced, alpha,
+                                    lw_pt, dash_off, dash_list, snap):
+            return
         for i in range(N):
             path, transform = path_ids[i % Npaths]
             xo = yo = 0.0
@@ -555,6 +558,75 @@ class RendererSplinefig(RendererBase):
             if stroke is not None:
                 core.stroke_path(v, codes, *stroke)
                 t.items += 1
+
+    def _collection_at_once(self, t, path_ids, N, toffsets, facecolors, edgecolors, linewidths, linestyles, forced, alpha,
+                            lw_pt, dash_off, dash_list, snap) -> bool:
+        """The loop of draw_path_collection in one call to the scene, for one path that is moved,
+        not reshaped, from item to item (not snapped, not simplified) under one dash pattern:
+        the same items, colours and widths. False when the collection is not of that kind."""
+        if len(path_ids) != 1 or len(linestyles) > 1 or N < 2:
+            return False
+        path, transform = path_ids[0]
+        if path.should_simplify:
+            return False
+        Nfc, Nec, Nlw = len(facecolors), len(edgecolors), len(linewidths)
+        ec = np.asarray(edgecolors, dtype=np.float64).reshape(-1, 4) if Nec else np.zeros((0, 4))
+        fc = np.asarray(facecolors, dtype=np.float64).reshape(-1, 4) if Nfc else np.zeros((0, 4))
+        if Nec and Nlw == 0 and (ec[:, 3] == 0).any():
+            return False  # a transparent edge sets gc0's width to 0 for the items after it too
+        if len(linestyles):
+            dash_off, dash_list = linestyles[0]
+        lw0 = float(self.points_to_pixels(lw_pt))
+        p = path.cleaned(transform + self._flip(), remove_nans=True, curves=True, stroke_width=lw0, snap=snap)
+        if _snaps(p, snap):
+            return False
+        idx = np.arange(N)
+        if toffsets is not None:
+            offs = toffsets[idx % len(toffsets)]
+            ok = np.isfinite(offs).all(axis=1)
+            idx, offs = idx[ok], offs[ok] * (1.0, -1.0)
+        else:
+            offs = np.zeros((N, 2))
+        n = len(idx)
+
+        def linear(c):
+            rgb = np.clip(c[:, :3], 0.0, 1.0)
+            rgb = np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+            return np.column_stack([rgb, np.clip(c[:, 3], 0.0, 1.0)])
+
+        fills = np.full((n, 4), -1.0)
+        if Nfc:
+            c = fc[idx % Nfc]
+            keep = c[:, 3] != 0
+            if forced:
+                c = c.copy()
+                c[:, 3] = alpha
+            keep &= c[:, 3] > 0
+            fills[keep] = linear(c[keep])
+        strokes = np.full((n, 4), -1.0)
+        widths = np.zeros(n)
+        if Nec:
+            c = ec[idx % Nec]
+            lws = np.asarray(linewidths, dtype=np.float64)[idx % Nlw] if Nlw else np.full(n, float(lw_pt))
+            lws = np.where(c[:, 3] == 0.0, 0.0, lws)
+            if forced:
+                c = c.copy()
+                c[:, 3] = alpha
+            widths = lws * (self.dpi / 72)
+            keep = (widths > 0) & (c[:, 3] > 0)
+            strokes[keep] = linear(c[keep])
+            widths = np.where(keep, widths, 0.0)
+        ds = []
+        if dash_list is not None and len(dash_list):
+            ds = [float(self.points_to_pixels(d)) for d in dash_list]
+            if sum(ds) <= 0:
+                ds = []
+        self._for_shapes(t)
+        t.core.path_items(np.ascontiguousarray(p.vertices, dtype=np.float64), self._codes(p), np.ascontiguousarray(offs),
+                          fills, strokes, np.ascontiguousarray(widths), "nonzero", self._gc_join, self._gc_cap, 4.0, ds,
+                          float(self.points_to_pixels(dash_off or 0.0)), float(t.x0), float(t.y0))
+        t.items += 2 * n
+        return True
 
     def draw_markers(self, gc, marker_path, marker_trans, path, trans, rgbFace=None):
         """One outline, prepared once, drawn at each vertex of path (at the nearest whole pixel,

@@ -60,7 +60,9 @@ using u8array = py::array_t<std::uint8_t, py::array::c_style>;
 // Bezier: this vertex is the control point, the next the end, 4 cubic: this and the next are
 // the controls, the third the end, 79 close; an empty code array: a polyline). A curve that
 // runs past the end or lacks a start point throws, naming the vertex.
-render::Path path_of(const f64array& vertices, const u8array& codes) {
+// With an offset (dx, dy) added to every vertex, then an origin (ox, oy) taken off: the same
+// doubles as adding and subtracting them in numpy.
+render::Path path_of(const f64array& vertices, const u8array& codes, double dx = 0, double dy = 0, double ox = 0, double oy = 0) {
   const std::size_t n = static_cast<std::size_t>(vertices.shape(0));
   const double* v = vertices.data();
   const std::uint8_t* c = codes.size() ? codes.data() : nullptr;
@@ -68,7 +70,11 @@ render::Path path_of(const f64array& vertices, const u8array& codes) {
     throw std::invalid_argument("codes: " + std::to_string(codes.size()) + " codes for " + std::to_string(n) + " vertices");
   render::Path path;
   bool started = false;
-  auto at = [&](std::size_t i) { return Vec2{v[2 * i], v[2 * i + 1]}; };
+  const bool moved = dx != 0 || dy != 0 || ox != 0 || oy != 0;
+  auto at = [&](std::size_t i) {
+    if (!moved) return Vec2{v[2 * i], v[2 * i + 1]};
+    return Vec2{(v[2 * i] + dx) - ox, (v[2 * i + 1] + dy) - oy};
+  };
   for (std::size_t i = 0; i < n;) {
     const int code = c ? c[i] : (i == 0 ? 1 : 2);
     if (code == 0) break;
@@ -210,6 +216,35 @@ void bind_render(py::module_& m) {
       .def("stroke_path", [](render::Scene& s, const f64array& vertices, const u8array& codes, const std::array<float, 4>& color, double width,
                              const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes, double dash_offset) {
         s.stroke_path(path_of(vertices, codes), stroke_of(width, join, cap, miter_limit, std::move(dashes), dash_offset), color_of(color));
+      })
+      // One path drawn at n offsets, each its own items in order: its fill (fills[i], skipped
+      // where the alpha is negative), then its stroke (strokes[i] at widths[i], skipped where
+      // the width is not positive or the alpha negative), with one join, cap and dash pattern.
+      // Item i's vertices are (vertex + offsets[i]) - origin. A matplotlib path collection.
+      .def("path_items", [](render::Scene& s, const f64array& vertices, const u8array& codes, const f64array& offsets,
+                            const f64array& fills, const f64array& strokes, const f64array& widths, const std::string& rule,
+                            const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes,
+                            double dash_offset, double ox, double oy) {
+        const py::ssize_t n = offsets.ndim() == 2 && offsets.shape(1) == 2 ? offsets.shape(0) : -1;
+        if (n < 0) throw py::value_error("offsets: expected an (n, 2) array");
+        if (fills.ndim() != 2 || fills.shape(0) != n || fills.shape(1) != 4) throw py::value_error("fills: expected an (n, 4) array");
+        if (strokes.ndim() != 2 || strokes.shape(0) != n || strokes.shape(1) != 4) throw py::value_error("strokes: expected an (n, 4) array");
+        if (widths.ndim() != 1 || widths.shape(0) != n) throw py::value_error("widths: expected n widths");
+        const auto fill_rule = pick<render::FillRule>(rule, "rule", {{"nonzero", render::FillRule::NonZero}, {"evenodd", render::FillRule::EvenOdd}});
+        const double* o = offsets.data();
+        const double* f = fills.data();
+        const double* k = strokes.data();
+        const double* w = widths.data();
+        const auto color = [](const double* c) {
+          return render::Color{static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]), static_cast<float>(c[3])};
+        };
+        for (py::ssize_t i = 0; i < n; ++i, o += 2, f += 4, k += 4) {
+          const bool fill = f[3] >= 0, stroke = w[i] > 0 && k[3] >= 0;
+          if (!fill && !stroke) continue;
+          const render::Path path = path_of(vertices, codes, o[0], o[1], ox, oy);
+          if (fill) s.fill_path(path, fill_rule, color(f));
+          if (stroke) s.stroke_path(path, stroke_of(w[i], join, cap, miter_limit, dashes, dash_offset), color(k));
+        }
       })
       .def("image", [](render::Scene& s, const py::array& rgba, double x0, double y0, double x1, double y1, const std::string& sampling) {
         const auto smp = pick<render::Scene::Sampling>(sampling, "sampling", {{"nearest", render::Scene::Sampling::Nearest},

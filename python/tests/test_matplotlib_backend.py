@@ -402,7 +402,12 @@ def test_pytest_mpl_workflow(tmp_path):
     import subprocess
     import sys
 
-    env = dict(os.environ, MPLBACKEND="Agg")
+    import splinefig
+
+    # The package this test imports, also for the runs in tmp_path (a relative PYTHONPATH would
+    # not reach it from there).
+    here = os.path.dirname(os.path.dirname(os.path.abspath(splinefig.__file__)))
+    env = dict(os.environ, MPLBACKEND="Agg", PYTHONPATH=os.pathsep.join(filter(None, [here, os.environ.get("PYTHONPATH")])))
 
     def run(colour, *args):
         (tmp_path / "test_plot.py").write_text(PYTEST_MPL_TEST.replace("COLOUR", colour))
@@ -471,7 +476,6 @@ def test_hatch_lines_by_hand():
     im = png(fig, BACKEND, transparent=True)
     plt.close(fig)
     want = 0.0
-    h = w / 2 / np.sqrt(2)  # the strip's half-width along x and along y
     for tx in range(2):
         for ty in range(2):
             tile = [(tx * size, ty * size), (tx * size + size, ty * size), (tx * size + size, ty * size + size),
@@ -493,3 +497,37 @@ def test_hatch_lines_by_hand():
 
 def _area_signed(poly):
     return 0.5 * sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(poly, poly[1:] + poly[:1]))
+
+
+def collections():
+    fig, ax = plt.subplots(figsize=(4, 3), dpi=100)
+    rng = np.random.default_rng(3)
+    n = 300
+    x, y = rng.normal(size=n), rng.normal(size=n)
+    x[7] = np.nan  # a non-finite offset is skipped
+    face = rng.uniform(size=(n, 4))
+    face[::5, 3] = 0  # transparent faces: no fill
+    edge = rng.uniform(size=(n, 4))
+    edge[::7, 3] = 0  # transparent edges: no stroke
+    ax.scatter(x, y, s=rng.uniform(5, 80, size=n), c=face, edgecolors=edge, linewidths=rng.uniform(0, 2, size=n),
+               linestyle=":")
+    ax.scatter(x + 1, y, s=30, c=rng.uniform(size=n), alpha=0.4, linestyle="--", linewidths=1.5, edgecolors="k")
+    ax.scatter(x - 1, y, marker="s", s=20, c=rng.uniform(size=n))  # squares: snapped, item by item
+    ax.fill_between(np.arange(10) * 0.3, 0, 1, color="C3", alpha=0.5, hatch="/")
+    return fig
+
+
+def test_path_collections_as_matplotlibs_loop(monkeypatch):
+    # draw_path_collection (a path prepared once and moved, or all items in one call) gives the
+    # bytes of RendererBase's own loop over draw_path with its graphics context per item:
+    # per-item sizes, colours, transparent faces and edges, widths, forced alpha, dashes, a NaN
+    # offset, snapped squares and a hatched collection.
+    from matplotlib.backend_bases import RendererBase
+    import splinefig.matplotlib as backend
+
+    fig = collections()
+    ours = png(fig, BACKEND)
+    monkeypatch.setattr(backend.RendererSplinefig, "draw_path_collection", RendererBase.draw_path_collection)
+    loop = png(fig, BACKEND)
+    plt.close(fig)
+    assert np.array_equal(ours, loop), np.argwhere((ours != loop).any(axis=2))[:5]

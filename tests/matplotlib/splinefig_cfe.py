@@ -9,8 +9,6 @@ reference run); SPLINEFIG_MPL_BLEND=linear blends in linear light.
 """
 import os
 
-import pytest
-
 
 def _is_png_check(item) -> bool:
     fn = getattr(item, "obj", None)
