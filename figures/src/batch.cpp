@@ -16,7 +16,6 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <mutex>
 #include <new>
 #include <stdexcept>
@@ -90,24 +89,6 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
   return result;
 }
 
-// Whether the batch may load the image I/O module: a format other than those written without it
-// (PNG by libpng, SVG, PDF), or a spec that may name an image file (a `file =` key, as the
-// image elements have; a false alarm only loads the module early).
-bool needs_image_io(const std::vector<SpecFile>& specs, const BatchOptions& o) {
-  for (const auto& f : o.formats)
-    if (f == Format::exr) return true;
-  for (const SpecFile& s : specs) {
-    std::ifstream in(s.path, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), {});
-    for (std::size_t k = text.find("file"); k != std::string::npos; k = text.find("file", k + 4)) {
-      std::size_t j = k + 4;
-      while (j < text.size() && (text[j] == ' ' || text[j] == '\t')) ++j;
-      if (j < text.size() && text[j] == '=') return true;
-    }
-  }
-  return false;
-}
-
 // The spec's text by load_spec's rules (a regular file of at most kMaxSpecBytes), or nothing.
 std::optional<std::string> spec_text(const std::string& path) {
   namespace fs = std::filesystem;
@@ -136,7 +117,8 @@ void collect_inputs(const toml::node& node, const std::string& key, const std::s
       if (const auto* s = v.as_string(); s && names_a_file(name) && !s->get().empty()) {
         std::filesystem::path p(s->get());
         if (p.is_relative()) p = base / p;
-        out.push_back({p.string(), detail::line_of(spec, v.source()) + ": " + path + " = \"" + s->get() + "\""});
+        out.push_back({p.string(), detail::line_of(spec, v.source()) + ": " + path + " = \"" + s->get() + "\"",
+                       name == "file"});
       } else {
         collect_inputs(v, path, spec, base, out);
       }
@@ -144,6 +126,32 @@ void collect_inputs(const toml::node& node, const std::string& key, const std::s
   } else if (const toml::array* a = node.as_array()) {
     for (const auto& v : *a) collect_inputs(v, key, spec, base, out);
   }
+}
+
+// The first output that is an input of the specs (`inputs` their spec_inputs): see
+// output_over_input.
+std::string output_over(const std::vector<std::string>& outputs, const std::vector<std::string>& specs,
+                        const std::vector<std::vector<SpecInput>>& inputs) {
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const std::string& spec = specs[i];
+    for (const std::string& out : outputs) {
+      if (same_file(out, spec)) return out + ": it is the spec " + spec + ", an input";
+      for (const SpecInput& in : inputs[i])
+        if (same_file(out, in.path)) return out + ": it is " + in.where + ", an input";
+    }
+  }
+  return {};
+}
+
+// Whether the batch may load the image I/O module: a format other than those written without it
+// (PNG by libpng, SVG, PDF), or a spec with an image read from a file.
+bool needs_image_io(const std::vector<std::vector<SpecInput>>& inputs, const BatchOptions& o) {
+  for (const auto& f : o.formats)
+    if (f == Format::exr) return true;
+  for (const auto& spec : inputs)
+    for (const SpecInput& in : spec)
+      if (in.image) return true;
+  return false;
 }
 
 }  // namespace
@@ -166,14 +174,9 @@ std::vector<SpecInput> spec_inputs(const std::string& spec_path) {
 }
 
 std::string output_over_input(const std::vector<std::string>& outputs, const std::vector<std::string>& specs) {
-  for (const std::string& spec : specs) {
-    std::vector<SpecInput> inputs = spec_inputs(spec);
-    inputs.insert(inputs.begin(), SpecInput{spec, "the spec " + spec});
-    for (const std::string& out : outputs)
-      for (const SpecInput& in : inputs)
-        if (same_file(out, in.path)) return out + ": it is " + in.where + ", an input";
-  }
-  return {};
+  std::vector<std::vector<SpecInput>> inputs;
+  for (const std::string& spec : specs) inputs.push_back(spec_inputs(spec));
+  return output_over(outputs, specs, inputs);
 }
 
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
@@ -184,8 +187,11 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
   const int workers = static_cast<int>(std::min<std::size_t>(
       {specs.size(), static_cast<std::size_t>(worker_count(options.threads)), static_cast<std::size_t>(worker_count(0))}));
   const int raster_threads = workers > 1 ? 1 : options.threads;
-  // No output may replace a file a spec reads (its image and data files, the specs themselves),
-  // nor index.json and index.html: all refused before anything is rendered or written.
+  // The files each spec reads (its image and data files), from its parsed TOML.
+  std::vector<std::vector<SpecInput>> inputs;
+  for (const SpecFile& s : specs) inputs.push_back(spec_inputs(s.path));
+  // No output may replace a file a spec reads, nor a spec, nor index.json and index.html: all
+  // refused before anything is rendered or written.
   {
     std::vector<std::string> outputs, paths;
     for (const SpecFile& s : specs) {
@@ -194,12 +200,12 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
         outputs.push_back((std::filesystem::path(options.out_dir) / (s.name + "." + extension(format))).string());
     }
     for (const char* index : {"index.json", "index.html"}) outputs.push_back((std::filesystem::path(options.out_dir) / index).string());
-    if (std::string bad = output_over_input(outputs, paths); !bad.empty())
+    if (std::string bad = output_over(outputs, paths, inputs); !bad.empty())
       throw std::runtime_error(bad + " (render into another --out)");
   }
   // The image I/O module first, if the batch may use it: a library it loads starts threads of its
   // own when loaded, and under a thread limit those must not find the budget taken by the workers.
-  if (needs_image_io(specs, options)) preload_image_io();
+  if (needs_image_io(inputs, options)) preload_image_io();
   // The canvases held at once: three quarters of the memory left to the process
   // (memory_available), less each worker's thread stack and malloc arena (8 and 64 MiB of
   // address space).

@@ -50,6 +50,7 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
 struct SpecInput {
   std::string path;   // as resolved
   std::string where;  // "FILE:LINE: image.file = \"pic.png\""
+  bool image = false; // a `file` key: an image ([[image]], [[axes.image]]), read by the image I/O module
 };
 // Every file the spec at `spec_path` names; none for a spec load_spec would refuse to read or
 // parse (its own error comes from there).
