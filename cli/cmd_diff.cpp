@@ -83,7 +83,7 @@ int run(const DiffArgs& args, const CLI::App& app) {
   if (cli::is_stdio(args.mask)) throw cli::Failure("--mask -: stdin is not read for the mask (give a file)");
   for (const auto& [flag, out] : {std::pair{"--diff-image", &args.diff_image}, std::pair{"--triptych", &args.triptych}})
     if (cli::is_stdio(*out)) throw cli::Failure(std::string(flag) + " -: stdout holds the report (give a file)");
-  cli::Scratch scratch;
+  cli::Scratch scratch(4);
   const std::string stdin_path = cli::is_stdio(args.a) || cli::is_stdio(args.b) ? cli::stdin_image(scratch) : "";
   const auto path_of = [&](const std::string& p) { return cli::is_stdio(p) ? stdin_path : p; };
   const auto said = [&](const std::string& m) { return cli::said_as(m, stdin_path, "stdin"); };

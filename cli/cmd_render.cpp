@@ -28,7 +28,7 @@ std::vector<fig::SpecInput> stdin_spec_inputs(const std::string& text) {
   {
     std::ofstream f(path, std::ios::binary);
     if (!f.write(text.data(), static_cast<std::streamsize>(text.size())) || !f.flush())
-      throw splinefig::cli::Failure("cannot save stdin in " + path, 4);
+      throw splinefig::cli::Failure("cannot save stdin in " + path);
   }
   std::vector<fig::SpecInput> inputs = fig::spec_inputs(path);
   const std::string dir = std::filesystem::path(path).parent_path().string() + "/";
@@ -128,7 +128,7 @@ const splinefig::cli::Registration reg{
               fig::write_figure_file(f, path, *format, w, raster);
             } catch (const splinefig::UnwritableFile& e) {
               if (!to_stdout) throw;
-              throw Failure(splinefig::cli::said_as(e.what(), path, "stdout"), 4);
+              throw Failure(splinefig::cli::said_as(e.what(), path, "stdout"));
             }
             if (to_stdout) splinefig::cli::file_to_stdout(scratch, path);
           } catch (const std::length_error& e) {  // an item past the rasterizer's work limit

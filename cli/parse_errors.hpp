@@ -102,7 +102,9 @@ inline std::string missing_message(const CLI::App& sub) {
   std::vector<std::string> missing;
   for (const CLI::Option* o : sub.get_options()) {
     if (!o->get_required() || o->count() > 0) continue;
-    std::string d = o->get_description();
+    // The description's first clause: "Figure spec (TOML, see docs/spec.md); - reads it from stdin"
+    // is named "SPEC, the figure spec (TOML, see docs/spec.md)" in a list of what is missing.
+    std::string d = o->get_description().substr(0, o->get_description().find(';'));
     if (!d.empty()) d[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(d[0])));
     missing.push_back(o->get_positional() && !d.empty() ? option_names(*o) + ", the " + d
                                                         : option_names(*o) + " " + o->get_type_name());

@@ -52,6 +52,19 @@ void check_exists(const std::string& path, const fs::file_status& st, const std:
   unreadable(path, "no such file");
 }
 
+// An existing regular file this process may open, else why not (no such file, a directory,
+// the system's reason such as Permission denied): the same words for read_image and the header
+// check, before OpenImageIO, whose message would not say why.
+void check_readable_file(const std::string& path) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  check_exists(path, st, ec);
+  if (fs::is_directory(st)) unreadable(path, "is a directory");
+  if (!fs::is_regular_file(st)) unreadable(path, "not a regular file");
+  std::ifstream probe(path, std::ios::binary);
+  if (!probe) unreadable(path, std::string("cannot open file (") + std::strerror(errno) + ")");
+}
+
 // Colour channels of straight (unassociated) values: sRGB-decoded when `srgb`, then
 // multiplied by alpha when `associate`.
 void to_linear_associated(Image& im, bool srgb, bool associate, int bits) {
@@ -102,10 +115,7 @@ std::uint64_t check_size(const std::string& path, const detail::CodecHeader& spe
 }  // namespace
 
 void check_image_header(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  check_exists(path, st, ec);
-  if (!fs::is_regular_file(st)) unreadable(path, fs::is_directory(st) ? "is a directory" : "not a regular file");
+  check_readable_file(path);
   if (has_png_signature(path)) {
     check_png_header(path);
     return;
@@ -121,15 +131,7 @@ void check_image_header(const std::string& path) {
 }
 
 Image read_image(const std::string& path, ReadMode mode, FileFormat* format) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  check_exists(path, st, ec);
-  if (fs::is_directory(st)) unreadable(path, "is a directory");
-  if (!fs::is_regular_file(st)) unreadable(path, "not a regular file");
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe) unreadable(path, std::string("cannot open file (") + std::strerror(errno) + ")");
-  }
+  check_readable_file(path);
   if (has_png_signature(path)) {
     check_png_header(path);  // the declared size first: nothing is inflated for an oversized image
     check_png_structure(path);

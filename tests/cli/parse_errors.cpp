@@ -88,6 +88,11 @@ TEST_CASE("parse errors: a missing argument is named in words, with the command'
   check_says({"diff"}, "splinefig diff: missing A, the first (expected) image and B, the second (actual) image; "
                        "usage: splinefig diff A B [options]");
   check_says({"render", spec}, "splinefig render: missing -o/--output PATH; usage: splinefig render SPEC -o PATH [options]");
+  // A positional is named by the first clause of its description, the rest being for --help.
+  check_says({"render"}, "splinefig render: missing SPEC, the figure spec (TOML, see docs/spec.md) and -o/--output PATH; "
+                         "usage: splinefig render SPEC -o PATH [options]");
+  check_says({"resample"}, "splinefig resample: missing IN, the input image (PNG, EXR, TIFF or JPEG), -o/--output PATH, "
+                           "and --filter SPEC; usage: splinefig resample IN -o PATH --filter SPEC [options]");
   check_says({"diff", "a.png", "b.png", "c.png"},
              "splinefig diff: unexpected argument 'c.png' (usage: splinefig diff A B [options]; see splinefig diff --help)");
   check_says({"render", spec, "-o", "x.png", "--", "c.png"},

@@ -154,10 +154,11 @@ TEST_CASE("stdio: resample - -o - gives the bytes of the file run, in the format
     CHECK(r.code == 0);
     CHECK(r.out == slurp(file));
   }
-  // Not an image on stdin, or an empty stdin: one line, nothing on stdout.
-  check_one_line_failure(run({"resample", "-", "-o", "-", "--scale", "0.5", "--filter", "box"}, "0,0\n1,1\n"), 4,
+  // Not an image on stdin, or an empty stdin: one line, nothing on stdout, exit 2 as for any
+  // input resample cannot read (4 is diff's code only).
+  check_one_line_failure(run({"resample", "-", "-o", "-", "--scale", "0.5", "--filter", "box"}, "0,0\n1,1\n"), 2,
                          "stdin is not a PNG, EXR, JPEG or TIFF image");
-  check_one_line_failure(run({"resample", "-", "-o", "-", "--scale", "0.5", "--filter", "box"}, ""), 4,
+  check_one_line_failure(run({"resample", "-", "-o", "-", "--scale", "0.5", "--filter", "box"}, ""), 2,
                          "stdin is empty");
   // A PNG cut short on stdin is said as stdin, not as a scratch file.
   const auto cut = run({"resample", "-", "-o", "-", "--scale", "0.5", "--filter", "box"}, png.substr(0, png.size() / 2));
@@ -181,6 +182,9 @@ TEST_CASE("stdio: diff - B compares stdin with B, and - for both is refused") {
   CHECK(run({"diff", a, "-"}, slurp(a)).code == 0);
   check_one_line_failure(run({"diff", "-", "-"}, slurp(a)), 2, "A and B are both -");
   check_one_line_failure(run({"diff", "-", a, "--diff-image", "-"}, slurp(a)), 2, "--diff-image -: stdout holds the report");
+  // What cannot be read as an image on stdin is idiff's exit 4 for diff.
+  check_one_line_failure(run({"diff", "-", a}, ""), 4, "stdin is empty");
+  check_one_line_failure(run({"diff", a, "-"}, "0,0\n"), 4, "stdin is not a PNG, EXR, JPEG or TIFF image");
   fs::remove_all(dir);
 }
 
