@@ -232,6 +232,12 @@ TEST_CASE("caption fields: values, number format and errors", "[captions]") {
        "c.toml:2: caption_field[0]: element: \"axes.bezier[3]\" is no plot element of this spec"},
       {head + field("element = \"axes.lagrange[0]\"\nvalue = \"d2(0)\"") + axes,
        "c.toml:2: caption_field[0]: value: d2() needs a curve made of cubic pieces"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"leakage()\"") + axes,
+       "c.toml:2: caption_field[0]: value: leakage() reads a response or filter element; \"axes.bezier[0]\" is neither"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"marks()\"") + axes,
+       "c.toml:2: caption_field[0]: value: marks() reads a curve with marks; \"axes.bezier[0]\" has none"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"steps()\"") + axes,
+       "c.toml:2: caption_field[0]: value: steps() reads an inbetween filmstrip (steps = N); \"axes.bezier[0]\" is not one"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"d2(1.5)\"") + axes,
        "c.toml:2: caption_field[0]: value: d2(): t = 1.500000 is outside the curve's parameter range [0.000000, 1.000000]"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"knot(4)\"") + axes,
@@ -417,6 +423,39 @@ TEST_CASE("filter-response's caption prints |K(0.25)| in dB of the B-spline and 
   CHECK(contains(caption, "Catmull-Rom is at " + fmt(cr, 1) + " dB there"));
 }
 
+TEST_CASE("filter-response's caption prints the energy each filter keeps above Nyquist", "[captions]") {
+  const std::string caption = built_caption(builtin("filter-response"));
+  INFO(caption);
+  // Parseval: the fraction above |f| = 1/2 is 1 - 2 int_0^(1/2) |K(f)|^2 df / int k^2 ds, both by
+  // Simpson's rule here (K(f) itself by Simpson over the kernel, response_at).
+  auto simpson = [](auto g, double a, double b, int n) {
+    const double h = (b - a) / n;
+    double sum = 0;
+    for (int i = 0; i <= n; ++i) sum += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * g(a + i * h);
+    return sum * h / 3;
+  };
+  auto leak = [&](auto k) {
+    const double energy = simpson([&](double s) { return k(s) * k(s); }, -2, 2, 4000);
+    return 100 * (1 - 2 * simpson([&](double f) { const double r = response_at(k, f); return r * r; }, 0, 0.5, 200) / energy);
+  };
+  const double bs = leak([](double s) {
+    s = std::abs(s);
+    return s < 1 ? (4 - 6 * s * s + 3 * s * s * s) / 6 : s < 2 ? (2 - s) * (2 - s) * (2 - s) / 6 : 0.0;
+  });
+  const double cr = leak([](double s) { return cardinal(0.5, s); });
+  // The box's K is sinc: 1 - 2 int_0^(1/2) sinc^2 (its energy is 1).
+  const double box = 100 * (1 - 2 * simpson([](double f) {
+                                  if (f == 0) return 1.0;
+                                  const double x = M_PI * f;
+                                  return std::sin(x) * std::sin(x) / (x * x);
+                                }, 0, 0.5, 2000));
+  CHECK(bs == Approx(0.606).margin(5e-4));  // SciPy's quad gives 0.6060, 4.6958 and 22.6305
+  CHECK(cr == Approx(4.696).margin(5e-4));
+  CHECK(box == Approx(22.63).margin(5e-3));
+  CHECK(contains(caption, "keeps only " + fmt(bs, 1) + "% of its energy above Nyquist"));
+  CHECK(contains(caption, "and leaks " + fmt(cr, 1) + "%; box (sinc) leaks " + fmt(box, 0) + "%."));
+}
+
 TEST_CASE("the point lists of s003-fig09, s003-fig13, ends, arclength and multiplicity are the drawn points", "[captions]") {
   // Each list as the figure's source gives it (the seeds' B_i and S_i, the memo's knots), and it
   // is the element's own data: a knot moved in the spec moves in the caption.
@@ -431,6 +470,13 @@ TEST_CASE("the point lists of s003-fig09, s003-fig13, ends, arclength and multip
     INFO(name << ": " << caption);
     CHECK(contains(caption, text));
   }
+  // arclength's mark counts are the curves' own.
+  const FigureSpec arc = builtin("arclength");
+  CHECK(contains(built_caption(arc), "with " + std::to_string(element<CurveElement>(arc, 0, 0).marks) +
+                                         " points evenly spaced in the parameter t (left), which bunch where the curve "
+                                         "moves slowly, and " +
+                                         std::to_string(element<CurveElement>(arc, 1, 0).marks) + " points evenly spaced"));
+  CHECK(element<CurveElement>(arc, 0, 0).marks == 40);
   FigureSpec moved = builtin("s003-fig13");
   for (auto& item : moved.items)
     if (auto* ax = std::get_if<AxesSpec>(&item))

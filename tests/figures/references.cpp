@@ -49,7 +49,8 @@ TEST_CASE("the filter figures match their references") {
 TEST_CASE("the companion figures match their references") {
   for (const char* name : {"s003-fig01", "s003-fig02", "s003-fig03", "s003-fig04", "s003-fig05", "s003-fig06",
                            "s003-fig07", "s003-fig08", "s003-fig09", "s003-fig10", "s003-fig11", "s003-fig12",
-                           "s003-fig13", "s003-fig14", "s003-fig16", "s003-fig17", "s002-fig474", "local-betas"})
+                           "s003-fig13", "s003-fig14", "s003-fig15", "s003-fig16", "s003-fig17", "s002-fig474",
+                           "local-betas"})
     check_figure_reference(name);
 }
 

@@ -59,6 +59,7 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"the exact union's work for one drawn item: crossings of its outline with itself on the canvas",
        power_of_two((long long)(f::kMaxSweepCrossings)) + " (`Scene::set_max_crossings` changes it)"},
       {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},
+      {"`[[axes.inbetween]]` filmstrip frames (`steps` x keyframe intervals + 1)", std::to_string(f::kMaxFilmstripFrames)},
   };
   for (const auto& [quantity, limit] : expected) {
     INFO(quantity);

@@ -6,6 +6,8 @@
 
 #include <splinefig/figures/axes.hpp>
 
+#include <splinefig/kernel/analysis.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -132,6 +134,23 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
       fail(f, "value: " + fn + "(" + std::to_string(i) + ") of \"" + f.element + "\", which has " +
                   std::to_string(lb->betas.size()) + " knots");
     return {{lb->betas[i][fn == "b1" ? 0 : 1], 0}, false};
+  }
+  if (fn == "steps") {  // a filmstrip's subintervals per time unit
+    const auto* ib = std::get_if<InbetweenElement>(&e);
+    if (!ib || ib->steps == 0)
+      fail(f, "value: steps() reads an inbetween filmstrip (steps = N); \"" + f.element + "\" is not one");
+    return {{static_cast<double>(ib->steps), 0}, false};
+  }
+  if (fn == "leakage") {  // the percentage of a filter's energy above Nyquist (kernel/analysis.hpp)
+    const auto* r = std::get_if<ResponseElement>(&e);
+    const auto* fc = std::get_if<FilterCurveElement>(&e);
+    if (!r && !fc) fail(f, "value: leakage() reads a response or filter element; \"" + f.element + "\" is neither");
+    return {{100 * analyse(r ? r->filter : fc->filter).leakage, 0}, false};
+  }
+  if (fn == "marks") {  // the markers placed along a curve
+    const auto* c = std::get_if<CurveElement>(&e);
+    if (!c || c->marks == 0) fail(f, "value: marks() reads a curve with marks; \"" + f.element + "\" has none");
+    return {{static_cast<double>(c->marks), 0}, false};
   }
   if (fn == "k") {  // k(s) of a kernel (times its scale) or of a filter curve
     if (const auto* k = std::get_if<KernelElement>(&e)) return {{k->scale * kernel(k->basis, f.args[0]), 0}, false};

@@ -209,8 +209,9 @@ std::vector<GeneratedPart> parts_of(const LocalBetasElement& e) {
 }
 
 std::vector<GeneratedPart> parts_of(const InbetweenElement& e) {
-  // Each keyframe is one point of R^(2m); the in-between frame at t lies on the relaxed
-  // spline through them.
+  // Each keyframe is one point of R^(2m); an in-between frame lies on the relaxed spline through
+  // them (seed 003 section 6), or on the straight line between the two keyframes around it (the
+  // linear in-betweening the notes warn about).
   const std::size_t m = e.frames[0].size();
   Points keys;
   for (const auto& frame : e.frames) {
@@ -218,12 +219,44 @@ std::vector<GeneratedPart> parts_of(const InbetweenElement& e) {
     for (Vec2 q : frame) flat.insert(flat.end(), {q.x, q.y});
     keys.push_back(flat);
   }
-  const Interpolant s = interpolate_relaxed(keys);
-  std::vector<double> x(2 * m);
-  evaluate(s, e.t, 0, x);
-  std::vector<Vec2> pts;
-  for (std::size_t i = 0; i < m; ++i) pts.push_back({x[2 * i], x[2 * i + 1]});
-  return {points(pts, e.look)};
+  const auto relaxed = std::make_shared<Interpolant>(interpolate_relaxed(keys));
+  auto frame_at = [&](double t, Vec2 moved) {
+    std::vector<double> x(2 * m);
+    if (e.interpolation == InbetweenElement::Interpolation::Relaxed) {
+      evaluate(*relaxed, t, 0, x);
+    } else {
+      const std::size_t k = std::min(keys.size() - 2, static_cast<std::size_t>(std::floor(t)));
+      const double u = t - static_cast<double>(k);
+      for (std::size_t j = 0; j < 2 * m; ++j) x[j] = (1 - u) * keys[k][j] + u * keys[k + 1][j];
+    }
+    std::vector<Vec2> pts;
+    for (std::size_t i = 0; i < m; ++i) pts.push_back({x[2 * i] + moved.x, x[2 * i + 1] + moved.y});
+    return pts;
+  };
+  if (e.steps == 0) return {points(frame_at(e.t, {0, 0}), e.look)};
+  // A filmstrip: the frame at t = i / steps moved by i * shift, for i = 0 .. steps * n. The
+  // keyframes (i a multiple of steps) are drawn from their data, with markers, in key_color; the
+  // legend names the first in-between frame and the first keyframe.
+  SeriesLook between = e.look, key = e.look;
+  if (e.key_color) key.color = e.key_color;
+  key.mode = SeriesMode::LineMarkers;
+  key.stroke.dashes = {};
+  key.label = e.key_label;
+  std::vector<GeneratedPart> parts;
+  const int count = e.steps * static_cast<int>(keys.size() - 1);
+  for (int i = 0; i <= count; ++i) {
+    const Vec2 moved{i * e.shift.x, i * e.shift.y};
+    if (i % e.steps == 0) {
+      std::vector<Vec2> pts;
+      for (Vec2 q : e.frames[static_cast<std::size_t>(i / e.steps)]) pts.push_back({q.x + moved.x, q.y + moved.y});
+      parts.push_back(points(pts, key));
+      key.label = {};
+    } else {
+      parts.push_back(points(frame_at(static_cast<double>(i) / e.steps, moved), between));
+      between.label = {};
+    }
+  }
+  return parts;
 }
 
 }  // namespace splinefig::figures::detail

@@ -2,6 +2,7 @@
 // parameters. Their data is computed by the layout (generated.cpp), at the output scale.
 #include "spec_parse.hpp"
 
+#include <splinefig/base/limits.hpp>
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/spline/kernel.hpp>
 
@@ -144,11 +145,30 @@ InbetweenElement parse_inbetween(TableReader& r) {
     }
     e.frames.push_back(std::move(frame));
   }
+  // One frame at t, or a filmstrip of every 1/steps of a time unit.
   const auto t = r.opt_number("t");
   const double last = static_cast<double>(e.frames.size() - 1);
-  if (!t || *t < 0 || *t > last)
-    r.fail("t", "expected t = TIME between 0 and the last keyframe's " + std::to_string(e.frames.size() - 1));
-  e.t = *t;
+  const bool strip = r.has("steps");
+  if (strip && t) r.fail("steps", "give either t = TIME (one frame) or steps = N (a frame every 1/N time unit), not both");
+  if (!strip && !t) r.fail("t", "needs t = TIME (one frame) or steps = N (a frame every 1/N time unit)");
+  if (strip) {
+    e.steps = r.integer("steps", 1, 1, 64);
+    if (static_cast<double>(e.steps) * last + 1 > static_cast<double>(kMaxFilmstripFrames))
+      r.fail("steps", std::to_string(e.steps) + " steps over " + std::to_string(e.frames.size() - 1) +
+                          " keyframe intervals draw more than " + std::to_string(kMaxFilmstripFrames) + " frames");
+    e.shift = r.opt_point("shift").value_or(Vec2{0, 0});
+    e.key_color = r.opt_color("key_color");
+    Labelling key;
+    key.label = r.label("key_label", "");
+    e.key_label = key;
+  } else {
+    for (const char* k : {"shift", "key_color", "key_label"})
+      if (r.has(k)) r.fail(k, std::string(k) + " is for a filmstrip (steps = N)");
+    if (*t < 0 || *t > last)
+      r.fail("t", "expected t = TIME between 0 and the last keyframe's " + std::to_string(e.frames.size() - 1));
+    e.t = *t;
+  }
+  e.interpolation = static_cast<InbetweenElement::Interpolation>(r.choice("interpolation", {"relaxed", "linear"}, 0));
   e.look = parse_series_look(r, LookDefault::Curve);
   return e;
 }

@@ -57,6 +57,7 @@ inline constexpr std::size_t kMaxKeyParts = 64;       // parts of a dotted key o
 inline constexpr std::size_t kMaxValueNesting = 16;   // arrays and inline tables inside each other (the parser recurses)
 inline constexpr std::size_t kMaxMarks = 100000;      // x_marks, y_marks, curve marks: each a drawn shape
 inline constexpr std::size_t kMaxBezierPoints = 128;  // control points of one [[axes.bezier]] (degree 127)
+inline constexpr std::size_t kMaxFilmstripFrames = 4096;  // frames of one [[axes.inbetween]] filmstrip, each a stroke
 inline constexpr int kMaxTicks = 1000;                // ticks of one axis, each label measured
 // An axis range's span: at least kMinAxisSpan and kMinRelativeAxisSpan of the larger end's
 // magnitude, so that the pixel map and the ticks have distinct numbers to work with.

@@ -296,10 +296,16 @@ struct LocalBetasElement {  // [[axes.local_betas]]: one (b1, b2) per knot
   std::string origin;
 };
 
-struct InbetweenElement {  // [[axes.inbetween]]: a frame between keyframes
+struct InbetweenElement {  // [[axes.inbetween]]: frames between keyframes
+  enum class Interpolation { Relaxed, Linear };
   std::string where;
   std::vector<std::vector<Vec2>> frames;  // equally long
-  double t = 0;
+  double t = 0;                           // the one frame drawn, when steps == 0
+  int steps = 0;                          // > 0: a filmstrip, the frames at t = i / steps, 0 .. last keyframe
+  Interpolation interpolation = Interpolation::Relaxed;
+  Vec2 shift{0, 0};                       // a filmstrip's i-th frame is drawn moved by i * shift
+  std::optional<Color> key_color;         // a filmstrip's keyframes (unset: the look's colour)
+  Labelling key_label;                    // a filmstrip's keyframes' legend entry
   SeriesLook look;
 };
 
