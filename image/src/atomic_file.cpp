@@ -1,6 +1,7 @@
 // Atomic file publication with signal-safe cleanup of temporary files (see atomic_file.hpp).
 #include <splinefig/image/atomic_file.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -33,15 +34,54 @@ struct Slot {
 constexpr int kSlots = 64;
 Slot g_slots[kSlots];
 
-// Every signal whose default action ends the process and that another process (or a limit)
-// sends: the handler removes the temporaries, then the signal ends the process as it would have.
-// The synchronous faults (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT) are left alone. SIGXFSZ is
-// here for programs that leave it at its default; the splinefig command ignores it, so that a
-// write over the file-size limit fails with EFBIG and is reported like any failed write.
-constexpr int kSignals[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM,
-                            SIGPIPE, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ, SIGPOLL};
-constexpr int kSignalCount = static_cast<int>(std::size(kSignals));
-struct sigaction g_previous[kSignalCount];
+// Every signal whose default action ends the process: the handler removes the temporaries, then
+// the signal ends the process as it would have. That is the terminating signals another process
+// or a limit sends (SIGINT ... SIGXFSZ, the real-time signals), and also the faults (SIGSEGV,
+// SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP, SIGSYS), which kill(1) can send as well and after
+// which nothing of the file is worth keeping either. SIGXFSZ is here for programs that leave it
+// at its default; the splinefig command ignores it, so that a write over the file-size limit
+// fails with EFBIG and is reported like any failed write.
+constexpr int kChained[] = {SIGINT, SIGTERM, SIGHUP};
+constexpr int kFixed[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGVTALRM,
+                          SIGPROF, SIGXCPU, SIGXFSZ, SIGPOLL, SIGSEGV, SIGBUS,  SIGFPE,  SIGILL,  SIGABRT,
+                          SIGTRAP, SIGSYS,
+#ifdef SIGSTKFLT
+                          SIGSTKFLT,
+#endif
+#ifdef SIGPWR
+                          SIGPWR,
+#endif
+#ifdef SIGEMT
+                          SIGEMT,
+#endif
+#ifdef SIGLOST
+                          SIGLOST,
+#endif
+};
+
+// The signals above and the real-time signals, by number (SIGRTMIN is known only at run time).
+struct SignalList {
+  int count = 0;
+  int numbers[NSIG] = {};
+  sigset_t set;
+  SignalList() {
+    sigemptyset(&set);
+    auto add = [this](int sig) {
+      if (sig <= 0 || sig >= NSIG || sigismember(&set, sig) == 1) return;
+      numbers[count++] = sig;
+      sigaddset(&set, sig);
+    };
+    for (int sig : kFixed) add(sig);
+#if defined(SIGRTMIN) && defined(SIGRTMAX)
+    for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) add(sig);
+#endif
+  }
+};
+const SignalList& cleanup_signals() {
+  static const SignalList list;
+  return list;
+}
+struct sigaction g_previous[NSIG];  // by signal number, for the handler to restore
 
 // Creating a temporary file and registering it is one step as far as the handler can see: a
 // writer does both holding g_lock with the signals blocked in its own thread, and the handler
@@ -61,10 +101,7 @@ void unlock() { g_lock.clear(std::memory_order_release); }
 class Critical {
  public:
   Critical() {
-    sigset_t set;
-    sigemptyset(&set);
-    for (int sig : kSignals) sigaddset(&set, sig);
-    ::pthread_sigmask(SIG_BLOCK, &set, &old_);
+    ::pthread_sigmask(SIG_BLOCK, &cleanup_signals().set, &old_);
     lock();
   }
   ~Critical() {
@@ -85,8 +122,7 @@ extern "C" void remove_temporaries_and_reraise(int sig) {
   for (Slot& s : g_slots)
     if (s.state.load(std::memory_order_acquire) == 2) ::unlinkat(s.dirfd, s.name, 0);
   unlock();
-  for (int i = 0; i < kSignalCount; ++i)
-    if (kSignals[i] == sig) ::sigaction(sig, &g_previous[i], nullptr);
+  if (sig > 0 && sig < NSIG) ::sigaction(sig, &g_previous[sig], nullptr);
   errno = saved;
   ::raise(sig);  // delivered when this handler returns, to the previous action
 }
@@ -94,21 +130,24 @@ extern "C" void remove_temporaries_and_reraise(int sig) {
 void install_handlers() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (int i = 0; i < kSignalCount; ++i) {
+    const SignalList& list = cleanup_signals();
+    for (int i = 0; i < list.count; ++i) {
+      const int sig = list.numbers[i];
       struct sigaction current {};
-      if (::sigaction(kSignals[i], nullptr, &current) != 0) continue;
+      if (::sigaction(sig, nullptr, &current) != 0) continue;
       if (!(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_IGN) continue;
       // SIGINT, SIGTERM and SIGHUP are chained to a handler the program has (Python's SIGINT);
-      // the others are taken only at their default action, never from a profiler or a timer.
+      // the others are taken only at their default action, never from a profiler, a timer, a
+      // debugger or a sanitizer's fault handler.
       const bool is_default = !(current.sa_flags & SA_SIGINFO) && current.sa_handler == SIG_DFL;
-      if (i >= 3 && !is_default) continue;
-      g_previous[i] = current;
+      const bool chained = std::find(std::begin(kChained), std::end(kChained), sig) != std::end(kChained);
+      if (!chained && !is_default) continue;
+      g_previous[sig] = current;
       struct sigaction sa {};
       sa.sa_handler = remove_temporaries_and_reraise;
-      sigemptyset(&sa.sa_mask);  // the other cleanup signals wait while the handler holds g_lock
-      for (int other : kSignals) sigaddset(&sa.sa_mask, other);
+      sa.sa_mask = list.set;  // the other cleanup signals wait while the handler holds g_lock
       sa.sa_flags = 0;
-      ::sigaction(kSignals[i], &sa, nullptr);
+      ::sigaction(sig, &sa, nullptr);
     }
   });
 }

@@ -166,7 +166,7 @@ void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const 
   if (pid == 0) {
     std::signal(sig, SIG_DFL);  // as in a plain process (the test runner catches some)
     const rlimit no_core{0, 0};
-    ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXCPU and SIGXFSZ would dump core
+    ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXCPU, SIGXFSZ and the faults would dump core
     std::vector<std::thread> pool;
     for (int t = 0; t < threads; ++t)
       pool.emplace_back([&, t] {
@@ -208,8 +208,18 @@ TEST_CASE("atomic write: SIGTERM during parallel writes leaves no temporary file
 }
 
 TEST_CASE("atomic write: every signal that ends the process by default leaves no temporary file") {
-  for (int sig : {SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGVTALRM, SIGPROF, SIGXCPU, SIGXFSZ, SIGPOLL})
-    check_signal_leaves_no_temporary(sig, 2, 150, "signal-" + std::to_string(sig));
+  // SIGINT and SIGHUP as SIGTERM; those a limit or a timer sends; the faults, as kill(1) sends
+  // them; the Linux ones (SIGSTKFLT, SIGPWR) and the real-time signals at both ends and between.
+  std::vector<int> signals{SIGINT,  SIGHUP, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGPIPE, SIGVTALRM, SIGPROF, SIGXCPU,
+                           SIGXFSZ, SIGPOLL, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP, SIGSYS};
+#ifdef SIGSTKFLT
+  signals.push_back(SIGSTKFLT);
+#endif
+#ifdef SIGPWR
+  signals.push_back(SIGPWR);
+#endif
+  for (int sig : {SIGRTMIN, SIGRTMIN + 1, (SIGRTMIN + SIGRTMAX) / 2, SIGRTMAX}) signals.push_back(sig);
+  for (int sig : signals) check_signal_leaves_no_temporary(sig, 2, 150, "signal-" + std::to_string(sig));
 }
 
 TEST_CASE("atomic write: an inherited SIG_IGN stays ignored") {
