@@ -3,19 +3,22 @@
 // (65536 a side): under a 800 MB address space the message was "OpenEXR exception:
 // std::bad_alloc". The header check now refuses the window before OpenEXR sees it.
 #include "hostile.hpp"
-#include "skip.hpp"
 
 using namespace splinefig::hostile;
 
+// Under AddressSanitizer, which reserves terabytes of shadow memory and so cannot run under
+// ulimit -v, the same input runs without the limit: it is still refused from the header, and the
+// sanitizer watches the path it takes.
 TEST_CASE("an OpenEXR data window over the limits is refused from the header, in little memory") {
 #if defined(__SANITIZE_ADDRESS__)
-  splinefig::testing_support::skip("ulimit -v cannot limit a program built with AddressSanitizer");
-  return;
+  const std::string limit = "";
+#else
+  const std::string limit = "ulimit -v 800000 && ";
 #endif
   const fs::path dir = scratch();
   const std::string exr = std::string(SPLINEFIG_SOURCE_DIR) + "/tests/hostile/data/exr_wide_window.exr";
   fs::copy_file(exr, dir / "wide.exr");
-  const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && ulimit -v 800000 && timeout -s KILL " +
+  const std::string cmd = "cd " + splinefig::test::shell_quote(dir.string()) + " && " + limit + "timeout -s KILL " +
                           std::to_string(kTimeLimit) + " " + splinefig::test::shell_quote(SPLINEFIG_EXE) +
                           " diff wide.exr wide.exr > out.txt 2> err.txt";
   const int status = std::system(cmd.c_str());
