@@ -16,6 +16,8 @@
 #include <string>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 namespace {
@@ -140,6 +142,18 @@ bool encode(const char* format, const CodecImage& im, std::vector<unsigned char>
     // is not a failure.
     if (message == "failed TIFFWriteCustomDirectory() of the Exif data") message.clear();
     if (!ok || !closed || !message.empty()) {
+      // The TIFF's scratch file stopped at the file-size limit (ulimit -f) or on a full disk:
+      // said as a failed write of the output is said, not in libtiff's words about scanlines.
+      struct stat st {};
+      struct statvfs fs {};
+      rlimit size_limit{};
+      if (!scratch.empty() && ::stat(scratch.c_str(), &st) == 0) {
+        if (::getrlimit(RLIMIT_FSIZE, &size_limit) == 0 && size_limit.rlim_cur != RLIM_INFINITY &&
+            rlim_t(st.st_size) >= size_limit.rlim_cur)
+          message = std::string("write failed (") + std::strerror(EFBIG) + ")";
+        else if (::statvfs(scratch.c_str(), &fs) == 0 && fs.f_bavail == 0)
+          message = "cannot encode the TIFF in " + scratch + " (" + std::strerror(ENOSPC) + ")";
+      }
       fail(error, message);
       return false;
     }

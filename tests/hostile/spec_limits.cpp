@@ -222,6 +222,12 @@ TEST_CASE("every command's file write over the file-size limit is a one-line err
          "large)\nsplinefig figures: 1 of 1 figures failed\n", 2},
         {"resample " + png + " -o keep.png --filter bspline --size 600x600",
          "splinefig resample: keep.png: write failed (File too large)\n", 2},
+        {"resample " + png + " -o keep.tif --filter bspline --size 600x600",
+         "splinefig resample: keep.tif: write failed (File too large)\n", 2},
+        {"resample " + png + " -o keep.jpg --filter bspline --size 600x600",
+         "splinefig resample: keep.jpg: write failed (File too large)\n", 2},
+        {"resample " + png + " -o keep.exr --filter bspline --size 600x600",
+         "splinefig resample: keep.exr: write failed (File too large)\n", 2},
         {"diff " + png + " " + png + " --triptych keep.png",
          "splinefig diff: cannot write keep.png: write failed (File too large)\n", 4}}) {
     fs::create_directories(dir / "figs");
