@@ -8,6 +8,7 @@
 #include "spec_error_check.hpp"
 
 #include <splinefig/figures/figure.hpp>
+#include <splinefig/spline/basis.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -234,6 +235,8 @@ TEST_CASE("caption fields: values, number format and errors", "[captions]") {
        "c.toml:2: caption_field[0]: value: d2() needs a curve made of cubic pieces"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"leakage()\"") + axes,
        "c.toml:2: caption_field[0]: value: leakage() reads a response or filter element; \"axes.bezier[0]\" is neither"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"bias()\"") + axes,
+       "c.toml:2: caption_field[0]: value: bias() reads a curve whose basis is a beta or bspline"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"marks()\"") + axes,
        "c.toml:2: caption_field[0]: value: marks() reads a curve with marks; \"axes.bezier[0]\" has none"},
       {head + field("element = \"axes.bezier[0]\"\nvalue = \"steps()\"") + axes,
@@ -496,4 +499,33 @@ TEST_CASE("bias' caption prints where the b1 = 5 curve starts and ends on the en
   CHECK(d == 372);
   CHECK(contains(caption, "(b₁ = 5: it starts at " + fmt(start, 2) + " and ends at " + fmt(end, 2) +
                               ", on the leg from (6, 0) to (5, 2))"));
+}
+
+TEST_CASE("bias' caption prints the curves' own bias and tension values", "[captions]") {
+  const FigureSpec spec = builtin("bias");
+  const std::string caption = built_caption(spec);
+  INFO(caption);
+  // Each curve's b1 and b2 as its spec writes them ("beta:b1=V,b2=V"), read here with sscanf.
+  std::vector<double> b1s;
+  for (std::size_t k = 0; k < 5; ++k) {
+    double b1 = 0, b2 = -1;
+    REQUIRE(std::sscanf(element<CurveElement>(spec, 0, k).basis_spec.c_str(), "beta:b1=%lf,b2=%lf", &b1, &b2) == 2);
+    CHECK(b2 == 0);
+    b1s.push_back(b1);
+  }
+  std::sort(b1s.begin(), b1s.end());
+  CHECK(b1s == std::vector<double>{0.2, 0.5, 1, 2, 5});
+  CHECK(contains(caption, "for tension b₂ = 0 and bias b₁ = 0.2, 0.5, 1, 2, 5. b₁ = 1 is the B-spline"));
+  CHECK(contains(caption, "the curves for b₁ = 2 and 0.5 are mirror images"));
+  // Moved in the spec, moved in the caption.
+  FigureSpec moved = spec;
+  std::size_t a = 0;
+  for (auto& item : moved.items)
+    if (auto* ax = std::get_if<AxesSpec>(&item); ax && a++ == 0)
+      for (auto& e : ax->elements)
+        if (auto* c = std::get_if<CurveElement>(&e); c && c->basis_spec == "beta:b1=2,b2=0") {
+          c->basis_spec = "beta:b1=3,b2=0";
+          c->basis = splinefig::beta(3, 0);
+        }
+  CHECK(contains(built_caption(moved), "bias b₁ = 0.2, 0.5, 1, 3, 5."));
 }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <optional>
 
@@ -146,6 +147,17 @@ Value evaluate(const FigureSpec& spec, const CaptionField& f) {
     const auto* fc = std::get_if<FilterCurveElement>(&e);
     if (!r && !fc) fail(f, "value: leakage() reads a response or filter element; \"" + f.element + "\" is neither");
     return {{100 * analyse(r ? r->filter : fc->filter).leakage, 0}, false};
+  }
+  if (fn == "bias" || fn == "tension") {  // b1 or b2 of a curve's Beta-spline basis (the B-spline: 1, 0)
+    const auto* c = std::get_if<CurveElement>(&e);
+    if (c && c->basis.family == "bspline") return {{fn == "bias" ? 1.0 : 0.0, 0}, false};
+    if (!c || c->basis.family != "beta")
+      fail(f, "value: " + fn + "() reads a curve whose basis is a beta or bspline; \"" + f.element + "\" is not one");
+    // The canonical spec is "beta:b1=V,b2=V" with every digit of V (spline/basis.hpp).
+    const std::string& spec = c->basis.spec;
+    const auto at = spec.find(fn == "bias" ? "b1=" : "b2=");
+    if (at == std::string::npos) fail(f, "value: " + fn + "(): no parameter in \"" + spec + "\"");
+    return {{std::strtod(spec.c_str() + at + 3, nullptr), 0}, false};
   }
   if (fn == "marks") {  // the markers placed along a curve
     const auto* c = std::get_if<CurveElement>(&e);

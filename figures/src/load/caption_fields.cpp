@@ -23,7 +23,7 @@ const std::map<std::string, int, std::less<>>& functions() {
       {"point", 1},    {"x", 1},        {"y", 1},        {"d1", 1},       {"d2", 1},   {"curvature", 1},
       {"max_y", 2},    {"min_y", 2},    {"argmax_y", 2}, {"argmin_y", 2}, {"knot", 1}, {"count", 0},
       {"b1", 1},       {"b2", 1},       {"item", 1},     {"k", 1},        {"db", 1},       {"points", 0},
-      {"steps", 0},    {"leakage", 0},  {"marks", 0}};
+      {"steps", 0},    {"leakage", 0},  {"marks", 0},    {"bias", 0},     {"tension", 0}};
   return f;
 }
 
@@ -46,7 +46,7 @@ std::string parse_value(const std::string& text, CaptionField& f) {
   const auto fn = functions().find(f.function);
   if (fn == functions().end())
     return "\"" + f.function + "\" is not a value function (point, x, y, d1, d2, curvature, max_y, min_y, argmax_y, "
-           "argmin_y, knot, count, item, b1, b2, k, db, points, steps, leakage, marks)";
+           "argmin_y, knot, count, item, b1, b2, k, db, points, steps, leakage, marks, bias, tension)";
   const std::string inner = trim(text.substr(open + 1, close - open - 1));
   std::size_t at = 0;
   while (!inner.empty() && at <= inner.size()) {
