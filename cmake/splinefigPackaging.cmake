@@ -23,14 +23,20 @@ set(CPACK_PACKAGE_CONTACT "splinefig maintainers <splinefig@invalid>")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
-# The command's run-time libraries, found by dpkg-shlibdeps (package dpkg-dev), after the font
-# its text is drawn with.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
+# The command's run-time libraries, found by dpkg-shlibdeps (package dpkg-dev), after the fonts
+# its text is drawn with: DejaVu's core faces (fonts-dejavu-core) and the bold oblique ones
+# (fonts-dejavu-extra; the built-in figures' titles are bold oblique).
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, fonts-dejavu-extra")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # What building against the libraries needs (their CMake package and splinefig.pc require
 # these: SPLINEFIG_DEV_PACKAGES, beside SPLINEFIG_PC_REQUIRES), and the test matchers'
 # frameworks. Recommended, not required: the command alone needs none of them.
-list(JOIN SPLINEFIG_DEV_PACKAGES ", " CPACK_DEBIAN_PACKAGE_RECOMMENDS)
+# The Python package (in /usr/lib/python3/dist-packages) needs python3 with numpy.
+set(recommends ${SPLINEFIG_DEV_PACKAGES})
+if(SPLINEFIG_PYTHON)
+  list(APPEND recommends python3-numpy)
+endif()
+list(JOIN recommends ", " CPACK_DEBIAN_PACKAGE_RECOMMENDS)
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "catch2, libgtest-dev, libgmock-dev")
 set(CPACK_STRIP_FILES ON)
 include(CPack)

@@ -26,7 +26,7 @@ execute_process(COMMAND ${DPKG_DEB} -f ${debs} Package Version Depends RESULT_VA
 if(rc)
   message(FATAL_ERROR "dpkg-deb -f failed: ${rc}")
 endif()
-foreach(want "Package: splinefig" "libopenimageio" "libstdc\\+\\+6" "libc6" "fonts-dejavu-core")
+foreach(want "Package: splinefig" "libopenimageio" "libstdc\\+\\+6" "libc6" "fonts-dejavu-core" "fonts-dejavu-extra")
   if(NOT control MATCHES "${want}")
     message(FATAL_ERROR "the package's control lacks ${want}:\n${control}")
   endif()

@@ -1,4 +1,5 @@
-# Installs the built tree into a scratch prefix, moves the prefix elsewhere, keeps only one of
+# Installs the built tree into a scratch prefix, moves the prefix elsewhere, checks that no
+# installed file names the build or source tree, keeps only one of
 # its built-in specs, and runs the moved `splinefig figures` without SPLINEFIG_SPECS_DIR: it
 # must draw exactly the moved prefix's one spec, so it found share/splinefig/specs next to its
 # own bin/ and neither the source tree (33 specs) nor the original prefix.
@@ -9,6 +10,21 @@ string(RANDOM LENGTH 8 tag)
 set(MOVED ${TMP_DIR}/splinefig-relocated-${tag})
 file(REMOVE_RECURSE ${MOVED})
 file(RENAME ${WORK_DIR}/prefix ${MOVED})
+# No installed file holds a path of the build tree (where the prefix was, too) or of the source
+# tree: an installed program that looked there would run what anyone able to write there planted.
+string(REGEX REPLACE "([][+.*()^$?|\\])" "\\\\\\1" build_re "${BINARY_DIR}")
+string(REGEX REPLACE "([][+.*()^$?|\\])" "\\\\\\1" source_re "${SOURCE_DIR}/")
+file(GLOB_RECURSE installed_files LIST_DIRECTORIES false ${MOVED}/*)
+foreach(f IN LISTS installed_files)
+  file(STRINGS ${f} hits REGEX "${build_re}|${source_re}")
+  if(hits)
+    list(GET hits 0 hit)
+    file(REMOVE_RECURSE ${MOVED})
+    message(FATAL_ERROR "the installed ${f} holds a path of the build or source tree: ${hit}")
+  endif()
+endforeach()
+list(LENGTH installed_files count)
+message(STATUS "none of the ${count} installed files names the build or source tree")
 set(specs ${MOVED}/share/splinefig/specs)
 file(GLOB installed RELATIVE ${specs} ${specs}/*.toml)
 list(LENGTH installed count)
