@@ -117,7 +117,7 @@ void collect_inputs(const toml::node& node, const std::string& key, const std::s
       if (const auto* s = v.as_string(); s && names_a_file(name) && !s->get().empty()) {
         std::filesystem::path p(s->get());
         if (p.is_relative()) p = base / p;
-        out.push_back({p.string(), detail::line_of(spec, v.source()) + ": " + path + " = \"" + s->get() + "\"",
+        out.push_back({p.string(), detail::location_of(spec, v.source()).with_key(path).str() + " = \"" + s->get() + "\"",
                        name == "file"});
       } else {
         collect_inputs(v, path, spec, base, out);

@@ -79,7 +79,7 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, d
     } catch (const std::bad_alloc&) {
       throw;
     } catch (const std::exception& e) {
-      throw SpecFileError(ax.where + ": axes: " + e.what());
+      throw SpecFileError(ax.where.with_key("axes"), e.what());
     }
   }();
   sample_paths(prepared, panel.map, 0.05 / scale);
@@ -114,8 +114,8 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, d
       if (rects_meet(s, {b[0], b[1], b[2], b[3]})) why = "would meet the axes' " + info.text_boxes[j].what;
     }
     if (!why.empty()) {
-      const std::string& origin = p.origin_of(i);
-      throw SpecFileError((origin.empty() ? spec.where + ": axes" : origin) + ": its text " + why + " (the canvas " +
+      const SpecLocation& origin = p.origin_of(i);
+      throw SpecFileError(origin.empty() ? spec.where.with_key("axes") : origin, "its text " + why + " (the canvas " +
                           std::to_string(static_cast<long long>(canvas.width())) + "x" +
                           std::to_string(static_cast<long long>(canvas.height())) + ")");
     }
@@ -146,7 +146,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
     Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
-    const std::string origin = spec.title_origin.empty() ? spec.path + ": title" : spec.title_origin;
+    const SpecLocation origin = spec.title_origin.empty() ? SpecLocation{spec.path, 0, "title"} : spec.title_origin;
     p.set_origin(origin);
     // A title wider than the canvas's margins shrinks to fit them, else to fit the canvas (not
     // below 9 px); one that still does not fit across is refused. (A size the renderer refuses
@@ -165,7 +165,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
       };
       if (!shrink_to(W - 2 * std::max(0.0, L.margin)) && !shrink_to(W)) {
         const auto n = [](double v) { return std::to_string(static_cast<long long>(std::ceil(std::max(0.0, v) - 1e-9))); };
-        throw SpecFileError(origin + ": the canvas " + n(W) + "x" + n(H) + " leaves " + n(W) +
+        throw SpecFileError(origin, "the canvas " + n(W) + "x" + n(H) + " leaves " + n(W) +
                             " px across for the title; it needs at least " + n(full * 9 / full_size) +
                             " px (its text at 9 px), or show_title = false");
       }
@@ -183,7 +183,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
                        H};
   Occupancy occ(spec.canvas.width, spec.canvas.height);
   for (std::size_t i = 0; i < spec.items.size(); ++i) {
-    const std::string& origin = i < spec.item_origins.size() ? spec.item_origins[i] : spec.path;
+    const SpecLocation origin = i < spec.item_origins.size() ? spec.item_origins[i] : SpecLocation{spec.path, 0, ""};
     p.set_origin(origin);
     naming_origin(origin, [&] {
       std::visit(

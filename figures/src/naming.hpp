@@ -18,20 +18,20 @@ struct KeyError : std::invalid_argument {
 };
 
 // Runs f(); an error it throws other than SpecFileError becomes a SpecFileError
-// "ORIGIN: what" (one line), `origin` being "FILE:LINE: KEY" of the spec table being drawn; a
+// "ORIGIN: what" (one line), `origin` being the location of the spec table being drawn; a
 // KeyError becomes "ORIGIN.KEY: what".
 template <class F>
-void naming_origin(const std::string& origin, F&& f) {
+void naming_origin(const SpecLocation& origin, F&& f) {
   try {
     f();
   } catch (const SpecFileError&) {
     throw;
   } catch (const KeyError& e) {
-    throw SpecFileError(origin.empty() ? e.key + ": " + e.what() : origin + "." + e.key + ": " + e.what());
+    throw SpecFileError(origin.empty() ? e.key + ": " + e.what() : origin.str() + "." + e.key + ": " + e.what());
   } catch (const std::bad_alloc&) {
-    throw SpecFileError(origin + ": out of memory");
+    throw SpecFileError(origin, "out of memory");
   } catch (const std::exception& e) {
-    throw SpecFileError(origin.empty() ? std::string(e.what()) : origin + ": " + e.what());
+    throw SpecFileError(origin.empty() ? std::string(e.what()) : origin.str() + ": " + e.what());
   }
 }
 

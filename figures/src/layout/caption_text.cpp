@@ -24,19 +24,15 @@ struct Value {
 };
 
 [[noreturn]] void fail(const CaptionField& f, const std::string& message) {
-  throw SpecFileError(f.origin + ": " + message);
+  throw SpecFileError(f.origin, message);
 }
 
 // The element named by the field's key path and its axes.
 const PlotElement& find_element(const FigureSpec& spec, const CaptionField& f) {
-  const std::string suffix = ": " + f.element;
   for (const auto& item : spec.items)
     if (const auto* ax = std::get_if<AxesSpec>(&item))
-      for (std::size_t i = 0; i < ax->elements.size() && i < ax->element_origins.size(); ++i) {
-        const std::string& o = ax->element_origins[i];
-        if (o.size() >= suffix.size() && o.compare(o.size() - suffix.size(), suffix.size(), suffix) == 0)
-          return ax->elements[i];
-      }
+      for (std::size_t i = 0; i < ax->elements.size() && i < ax->element_origins.size(); ++i)
+        if (ax->element_origins[i].key == f.element) return ax->elements[i];
   fail(f, "element: \"" + f.element + "\" is no plot element of this spec (write its key path, e.g. axes.bezier[0] "
           "or axes[1].bezier[0])");
 }

@@ -52,8 +52,8 @@ Path bezier_path(BezierSpline b) {
   return p;
 }
 
-[[noreturn]] void reject(const std::string& origin, const std::exception& e) {
-  throw SpecFileError(origin + ": " + e.what());
+[[noreturn]] void reject(const SpecLocation& origin, const std::exception& e) {
+  throw SpecFileError(origin, e.what());
 }
 
 }  // namespace

@@ -78,7 +78,7 @@ std::vector<GeneratedPart> parts_of(const StepElement& e) {
     try {
       prefilter_line(c->data(), n, 1, sampled_kernel(*f), edge);
     } catch (const std::invalid_argument& x) {
-      throw SpecFileError(e.origin + ": " + x.what());
+      throw SpecFileError(e.origin, x.what());
     }
   }
   auto X = [f, c, n, edge](double t) {
@@ -132,7 +132,7 @@ std::vector<GeneratedPart> parts_of(const ZoneplateElement& e) {
   try {
     out = resample(src, e.size, e.size, f, opt);
   } catch (const std::invalid_argument& x) {
-    throw SpecFileError(e.origin + ": " + x.what());
+    throw SpecFileError(e.origin, x.what());
   }
   ImageElement im;
   im.extent = e.extent;

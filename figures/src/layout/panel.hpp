@@ -73,7 +73,7 @@ struct PreparedAxes {
   AxesSpec axes;
   std::map<size_t, Curve> curves;              // per CurveElement, by element index
   std::vector<std::pair<size_t, Path>> paths;  // series whose points are sampled from a path
-  std::vector<std::pair<size_t, std::string>> generated;  // series of generated elements, with where
+  std::vector<std::pair<size_t, SpecLocation>> generated;  // series of generated elements, with where
 };
 // Traced series get rough points (enough for the data range) until sample_paths().
 PreparedAxes prepare_axes(const AxesSpec& ax);

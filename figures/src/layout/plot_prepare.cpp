@@ -26,7 +26,7 @@ PreparedAxes prepare_axes(const AxesSpec& ax) {
   origins.clear();
   for (std::size_t i = 0; i < ax.elements.size(); ++i) {
     const PlotElement& e = ax.elements[i];
-    const std::string origin = i < ax.element_origins.size() ? ax.element_origins[i] : ax.where + ": axes";
+    const SpecLocation origin = i < ax.element_origins.size() ? ax.element_origins[i] : ax.where.with_key("axes");
     naming_origin(origin, [&] {
       if (const auto* c = std::get_if<CurveElement>(&e)) {
         Points knots(2);
@@ -69,8 +69,8 @@ void sample_paths(PreparedAxes& prepared, const PixelMap& map, double tolerance)
   if (!log_x && !log_y) return;
   for (const auto& [index, where] : prepared.generated)
     for (Vec2 q : std::get<SeriesElement>(prepared.axes.elements[index]).points) {
-      if (log_y && !(q.y > 0)) throw SpecFileError(where + ": a log y axis needs positive y data");
-      if (log_x && !(q.x > 0)) throw SpecFileError(where + ": a log x axis needs positive x data");
+      if (log_y && !(q.y > 0)) throw SpecFileError(where, "a log y axis needs positive y data");
+      if (log_x && !(q.x > 0)) throw SpecFileError(where, "a log x axis needs positive x data");
     }
 }
 

@@ -84,7 +84,7 @@ std::vector<Ref> references(const std::string& caption, std::string& problem) {
   return refs;
 }
 
-std::vector<CaptionField> parse_caption_fields(TableReader& r, const std::string& caption, const std::string& caption_key) {
+std::vector<CaptionField> parse_caption_fields(TableReader& r, const std::string& caption, const SpecLocation& caption_key) {
   std::vector<CaptionField> fields;
   std::set<std::string> names;
   r.each_table("caption_field", [&](TableReader& s, const toml::table&) {
@@ -106,16 +106,16 @@ std::vector<CaptionField> parse_caption_fields(TableReader& r, const std::string
   });
   std::string problem;
   const std::vector<Ref> refs = references(caption, problem);
-  if (!problem.empty()) throw SpecFileError(caption_key + ": " + problem);
+  if (!problem.empty()) throw SpecFileError(caption_key, problem);
   std::set<std::string> used;
   for (const Ref& ref : refs) {
     if (!names.count(ref.name))
-      throw SpecFileError(caption_key + ": {=" + ref.name + "} names no [[caption_field]] (declare it with name = \"" +
+      throw SpecFileError(caption_key, "{=" + ref.name + "} names no [[caption_field]] (declare it with name = \"" +
                           ref.name + "\")");
     used.insert(ref.name);
   }
   for (const CaptionField& f : fields)
-    if (!used.count(f.name)) throw SpecFileError(f.origin + ": \"" + f.name + "\" is declared but the caption never uses {=" + f.name + "}");
+    if (!used.count(f.name)) throw SpecFileError(f.origin, "\"" + f.name + "\" is declared but the caption never uses {=" + f.name + "}");
   return fields;
 }
 

@@ -17,9 +17,9 @@ class TableReader;
 
 // Reads the top level's [[caption_field]] tables and checks them against the caption: every
 // `{=name}` in it must be declared, every declared field used. `caption_key` is the caption's
-// "FILE:LINE: caption" for messages.
+// location, for messages.
 std::vector<CaptionField> parse_caption_fields(TableReader& r, const std::string& caption,
-                                               const std::string& caption_key);
+                                               const SpecLocation& caption_key);
 
 // Each `{=name}` of the caption, in order, with where it starts and ends. A field that is not
 // written {=NAME} sets `problem` and gives none.

@@ -54,12 +54,12 @@ void check_fill_references(const AxesSpec& ax) {
           found += *l == *want;
           labels += (labels.empty() ? "" : ", ") + ("\"" + *l + "\"");
         }
-      const std::string& key = want == &f->to ? f->to_origin : f->origin;
+      const SpecLocation& key = want == &f->to ? f->to_origin : f->origin;
       if (found == 0)
-        throw SpecFileError(key + ": no curve, kernel or series labelled \"" + *want + "\" in these axes (" +
+        throw SpecFileError(key, "no curve, kernel or series labelled \"" + *want + "\" in these axes (" +
                             (labels.empty() ? std::string("none has a label") : "labels: " + labels) + ")");
       if (found > 1)
-        throw SpecFileError(key + ": " + std::to_string(found) + " elements are labelled \"" + *want +
+        throw SpecFileError(key, std::to_string(found) + " elements are labelled \"" + *want +
                             "\"; give them different labels");
     }
   }

@@ -19,23 +19,6 @@
 
 namespace splinefig::figures {
 
-SpecFileError::SpecFileError(const std::string& message) : std::runtime_error([&] {
-  static constexpr char hex[] = "0123456789abcdef";
-  std::string line;
-  line.reserve(message.size());
-  for (const char ch : message) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c < 0x20 || c == 0x7f) {
-      line += "\\x";
-      line += hex[c >> 4];
-      line += hex[c & 15];
-    } else {
-      line += ch;
-    }
-  }
-  return line;
-}()) {}
-
 namespace detail {
 
 Basis checked_basis(TableReader& r, std::string_view key, const std::string& spec) {
@@ -249,11 +232,11 @@ ImageItem parse_image(TableReader& r, const ParseContext& ctx) {
 
 }  // namespace
 
-// An item with its source line (for document order) and its "FILE:LINE: KEY" (for messages).
+// An item with its source line (for document order) and its location (for messages).
 struct Placed {
   size_t line;
   Item item;
-  std::string origin;
+  SpecLocation origin;
 };
 
 // Reads every [key] / [[key]] table as an item.
@@ -282,7 +265,7 @@ void place_panels(FigureSpec& spec) {
     if (const auto* ax = std::get_if<AxesSpec>(&item); ax && ax->cell) {
       const auto [r, c] = *ax->cell;
       if (r >= L.rows || c >= L.cols)
-        throw SpecFileError(ax->where + ": axes.cell: " + cell_name(*ax->cell) + " is outside the " + grid);
+        throw SpecFileError(ax->where.with_key("axes.cell"), cell_name(*ax->cell) + " is outside the " + grid);
       taken[static_cast<size_t>(r) * L.cols + c] = 1;
     }
   size_t next = 0;
@@ -290,7 +273,7 @@ void place_panels(FigureSpec& spec) {
     auto* ax = std::get_if<AxesSpec>(&item);
     if (!ax || ax->cell || ax->box) continue;
     while (next < taken.size() && taken[next]) ++next;
-    if (next == taken.size()) throw SpecFileError(ax->where + ": axes: no free cell left in the " + grid);
+    if (next == taken.size()) throw SpecFileError(ax->where.with_key("axes"), "no free cell left in the " + grid);
     taken[next] = 1;
     ax->cell = std::array<int, 2>{static_cast<int>(next) / L.cols, static_cast<int>(next) % L.cols};
   }
@@ -309,7 +292,7 @@ FigureSpec read_spec(std::string_view text, const std::string& name, const std::
   } catch (const toml::parse_error& e) {
     std::string d(e.description());
     std::replace(d.begin(), d.end(), '\n', ' ');
-    throw SpecFileError(line_of(name, e.source()) + ": " + d);
+    throw SpecFileError(location_of(name, e.source()), d);
   }
   ParseContext ctx{name, base_dir};
   TableReader r(doc, name, "");

@@ -268,7 +268,7 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   }
 
   std::vector<std::pair<size_t, PlotElement>> elements;
-  std::map<size_t, std::string> origins;  // by source line; generated elements carry `where`
+  std::map<size_t, SpecLocation> origins;  // by source line; generated elements carry `where`
   auto each = [&](std::string_view key, auto&& read) {
     r.each_table(key, [&](TableReader& sub, const toml::table& t) {
       elements.emplace_back(t.source().begin.line, PlotElement{read(sub)});
@@ -290,15 +290,15 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   r.finish();
   std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [line, e] : elements) {
-    std::string origin = std::visit(
-        [](const auto& x) -> std::string {
+    SpecLocation origin = std::visit(
+        [](const auto& x) -> SpecLocation {
           if constexpr (requires { x.where; }) return x.where;
           else return {};
         },
         e);
     if (auto it = origins.find(line); origin.empty() && it != origins.end()) origin = it->second;
     ax.elements.push_back(std::move(e));
-    ax.element_origins.push_back(origin.empty() ? ax.where + ": " + r.path() : origin);
+    ax.element_origins.push_back(origin.empty() ? ax.where.with_key(r.path()) : origin);
   }
   check_fill_references(ax);  // spec_fill.cpp
 

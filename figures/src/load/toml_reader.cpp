@@ -47,7 +47,7 @@ std::string key_depth_problem(std::string_view text, const std::string& file) {
     return parts > kMaxKeyParts;
   };
   auto too_deep = [&]() {
-    return file + ":" + std::to_string(line) + ": a dotted key of more than " + std::to_string(kMaxKeyParts) +
+    return SpecLocation{file, line, ""}.str() + ": a dotted key of more than " + std::to_string(kMaxKeyParts) +
            " parts (the limit of key and table-header depth)";
   };
   auto is_bare = [](char c) {
@@ -91,7 +91,7 @@ std::string key_depth_problem(std::string_view text, const std::string& file) {
       if (c == '\n') ++line;
       if (c == '[' || c == '{') {
         if (++depth > kMaxValueNesting)
-          return file + ":" + std::to_string(line) + ": arrays and inline tables nested more than " +
+          return SpecLocation{file, line, ""}.str() + ": arrays and inline tables nested more than " +
                  std::to_string(kMaxValueNesting) + " deep (the limit of value nesting)";
       } else if ((c == ']' || c == '}') && depth > 0) {
         --depth;
@@ -190,38 +190,36 @@ std::string utf8_problem(std::string_view text, const std::string& file) {
   std::snprintf(buf, sizeof buf, "invalid UTF-8 (byte 0x%02X at column %zu)", static_cast<unsigned>(static_cast<unsigned char>(text[at])),
                 at - line_start + 1);
   const std::string name = key.empty() ? table : table.empty() ? key : table + "." + key;
-  return file + ":" + std::to_string(line) + ": " + (name.empty() ? "" : name + ": ") + buf;
+  return SpecLocation{file, line, name}.str() + ": " + buf;
 }
 
-std::string line_of(const std::string& file, const toml::source_region& where) {
-  if (where.begin.line == 0) return file;
-  return file + ":" + std::to_string(where.begin.line);
+SpecLocation location_of(const std::string& file, const toml::source_region& where) {
+  return {file, static_cast<std::size_t>(where.begin.line), ""};
 }
 
 TableReader::TableReader(const toml::table& table, std::string file, std::string path)
     : table_(table), file_(std::move(file)), path_(std::move(path)) {}
 
-std::string TableReader::where() const { return line_of(file_, table_.source()); }
+SpecLocation TableReader::where() const { return location_of(file_, table_.source()); }
 
 std::string TableReader::key_path(std::string_view key) const {
   return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
 }
 
-std::string TableReader::origin(std::string_view key) const {
+SpecLocation TableReader::origin(std::string_view key) const {
   const toml::node* n = table_.get(key);
-  const std::string loc = n && n->source().begin.line != 0 ? line_of(file_, n->source()) : where();
-  return loc + ": " + (key.empty() ? path_ : key_path(key));
+  const SpecLocation loc = n && n->source().begin.line != 0 ? location_of(file_, n->source()) : where();
+  return loc.with_key(key.empty() ? path_ : key_path(key));
 }
 
 void TableReader::fail(std::string_view key, const std::string& message) const {
   if (const toml::node* n = table_.get(key)) fail_at(*n, key, message);
-  throw SpecFileError(where() + ": " + (key.empty() ? path_ : key_path(key)) + ": " + message);
+  throw SpecFileError(where().with_key(key.empty() ? path_ : key_path(key)), message);
 }
 
 void TableReader::fail_at(const toml::node& node, std::string_view key, const std::string& message) const {
-  std::string loc = line_of(file_, node.source());
-  if (node.source().begin.line == 0) loc = where();
-  throw SpecFileError(loc + ": " + key_path(key) + ": " + message);
+  const SpecLocation loc = node.source().begin.line == 0 ? where() : location_of(file_, node.source());
+  throw SpecFileError(loc.with_key(key_path(key)), message);
 }
 
 bool TableReader::has(std::string_view key) const {
@@ -454,8 +452,8 @@ std::vector<const toml::table*> TableReader::tables(std::string_view key) {
 void TableReader::finish() const {
   for (auto&& [k, v] : table_) {
     if (used_.count(k.str())) continue;
-    std::string loc = line_of(file_, k.source().begin.line ? k.source() : v.source());
-    throw SpecFileError(loc + ": " + key_path(k.str()) + ": unknown key");
+    const SpecLocation loc = location_of(file_, k.source().begin.line ? k.source() : v.source());
+    throw SpecFileError(loc.with_key(key_path(k.str())), "unknown key");
   }
 }
 

@@ -88,10 +88,11 @@ class TableReader {
   [[noreturn]] void fail_at(const toml::node& node, std::string_view key, const std::string& message) const;
   // Fails at `node` if the string `s` read from it holds a NUL.
   void check_no_nul(const toml::node& node, std::string_view key, const std::string& s) const;
-  std::string where() const;  // "FILE:LINE" of the table
+  SpecLocation where() const;  // the table's file and line, no key
   std::string key_path(std::string_view key) const;
-  // "FILE:LINE: KEY", the prefix of fail(key, ...): for checks made after loading.
-  std::string origin(std::string_view key) const;
+  // The key's place (its line, else the table's; `key` empty: the table itself), the prefix of
+  // fail(key, ...): for checks made after loading.
+  SpecLocation origin(std::string_view key) const;
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
 
@@ -112,7 +113,8 @@ class TableReader {
   const PointSource* data_ = nullptr;
 };
 
-std::string line_of(const std::string& file, const toml::source_region& where);
+// `file` and the line where `where` begins (none when the parser gave none).
+SpecLocation location_of(const std::string& file, const toml::source_region& where);
 
 // Checks that a spec's text is valid UTF-8 before it is parsed; on the first invalid byte,
 // "FILE:LINE: KEY: invalid UTF-8 (byte 0xNN at column C)", KEY the dotted key whose value

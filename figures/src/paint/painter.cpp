@@ -14,10 +14,10 @@
 
 namespace splinefig::figures::detail {
 
-void Painter::set_origin(const std::string& origin) {
+void Painter::set_origin(const SpecLocation& origin) {
   if (origins_.back() != origin) origins_.push_back(origin);
 }
-const std::string& Painter::origin_of(std::size_t op) const { return origins_[op_origin_[op]]; }
+const SpecLocation& Painter::origin_of(std::size_t op) const { return origins_[op_origin_[op]]; }
 void Painter::add(Op op) {
   ops_.push_back(std::move(op));
   op_origin_.push_back(static_cast<std::uint32_t>(origins_.size() - 1));

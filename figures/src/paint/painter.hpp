@@ -75,14 +75,14 @@ class Painter : public TextMeasure {
 
   // "FILE:LINE: KEY" of the spec table whose drawing follows; every op records it, so that an
   // error found when the op is painted names that table.
-  void set_origin(const std::string& origin);
-  const std::string& origin_of(std::size_t op) const;
+  void set_origin(const SpecLocation& origin);
+  const SpecLocation& origin_of(std::size_t op) const;
 
  private:
   void add(Op op);
 
   std::vector<Op> ops_;
-  std::vector<std::string> origins_{std::string()};
+  std::vector<SpecLocation> origins_{SpecLocation()};
   std::vector<std::uint32_t> op_origin_;  // index into origins_, per op
 };
 

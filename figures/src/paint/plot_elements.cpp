@@ -389,7 +389,7 @@ void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p,
   const AxesSpec& ax = prepared.axes;
   ElementPainter d(ax, panel, p, occ, series, legend);
   for (size_t i = 0; i < ax.elements.size(); ++i) {
-    const std::string& origin = i < ax.element_origins.size() ? ax.element_origins[i] : ax.where + ": axes";
+    const SpecLocation origin = i < ax.element_origins.size() ? ax.element_origins[i] : ax.where.with_key("axes");
     p.set_origin(origin);
     naming_origin(origin, [&] { std::visit(
         [&](const auto& e) {
@@ -406,7 +406,7 @@ void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p,
         },
         ax.elements[i]); });
   }
-  p.set_origin(ax.where + ": axes");
+  p.set_origin(ax.where.with_key("axes"));
   d.place_inline_labels();
 }
 

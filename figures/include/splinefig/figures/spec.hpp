@@ -25,12 +25,29 @@ namespace splinefig::figures {
 using render::Color;
 using render::Vec2;
 
+// Where a spec says something: its file as named, the line (0: not known) and the key path
+// ("axes[0].curve[2].knots"; empty: the file or a table as a whole). Written "FILE:LINE: KEY",
+// without the line or the key where it has none (str()).
+struct SpecLocation {
+  std::string file;
+  std::size_t line = 0;
+  std::string key;
+
+  bool empty() const { return file.empty() && line == 0 && key.empty(); }
+  // The same file and line, naming `k`.
+  SpecLocation with_key(std::string k) const { return {file, line, std::move(k)}; }
+  std::string str() const;
+  bool operator==(const SpecLocation&) const = default;
+};
+
 // A bad spec: the message is one line, "FILE:LINE: KEY: what is wrong". Whatever a message
 // repeats from the spec (a value, a key, a label), a control character in it (a newline, an
 // ESC) is written as \xNN, so that no message spans lines or drives a terminal; UTF-8 stays.
 struct SpecFileError : std::runtime_error {
   explicit SpecFileError(const std::string& message);
   explicit SpecFileError(const char* message) : SpecFileError(std::string(message)) {}
+  // "AT: message".
+  SpecFileError(const SpecLocation& at, const std::string& message) : SpecFileError(at.str() + ": " + message) {}
 };
 
 // The limits a spec is checked against (canvas, marks, key parts, ...) are in base/limits.hpp.
@@ -197,7 +214,7 @@ struct FillElement {
   // line y = baseline, or the element labelled `to` (upper and lower are then empty).
   std::string under, to;
   double baseline = 0;
-  std::string origin, to_origin;  // "FILE:LINE: axes.fill[i].under" (.to), for the check of the labels
+  SpecLocation origin, to_origin;  // of `under` and `to`, for the check of the labels
 };
 
 struct TextElement {
@@ -235,11 +252,11 @@ struct ImageElement {
 // Elements whose data the layout computes with the spline library, the filter analysis or the
 // resampler (docs/companion.md, docs/resample.md). The spec holds only their parameters; the
 // layout turns them into series (curves sampled to 0.05 px like [[axes.curve]]) or an image.
-// `where` is "FILE:LINE: KEY" of the element's table and `origin` that of the key a computation
+// `where` is the location of the element's table and `origin` that of the key a computation
 // can reject, for messages.
 
 struct InterpElement {  // [[axes.interp]]: the spline through data
-  std::string where;
+  SpecLocation where;
   enum class EndMode { Relaxed, Clamped, Periodic };
   enum class Show { Curve, Control, Bezier };
   std::vector<Vec2> points;
@@ -247,11 +264,11 @@ struct InterpElement {  // [[axes.interp]]: the spline through data
   Show show = Show::Curve;
   std::optional<Vec2> start_velocity, end_velocity;  // clamped ends only
   SeriesLook look;
-  std::string origin;
+  SpecLocation origin;
 };
 
 struct RelaxedBsplineElement {  // [[axes.relaxed_bspline]]
-  std::string where;
+  SpecLocation where;
   enum class Show { Curve, Joints, Division, Bezier, AFrames };
   std::vector<Vec2> points;
   Show show = Show::Curve;
@@ -260,27 +277,27 @@ struct RelaxedBsplineElement {  // [[axes.relaxed_bspline]]
 };
 
 struct BezierElement {  // [[axes.bezier]]: one Bezier curve of any degree
-  std::string where;
+  SpecLocation where;
   std::vector<Vec2> points;
   SeriesLook look;
 };
 
 struct LagrangeElement {  // [[axes.lagrange]]: y(x) through the data
-  std::string where;
+  SpecLocation where;
   std::vector<Vec2> points;
   std::optional<std::array<double, 2>> range;  // default: the data's x extent
   SeriesLook look;
-  std::string origin;
+  SpecLocation origin;
 };
 
 struct RelaxedBasisElement {  // [[axes.relaxed_basis]]: f_k of relaxed interpolation
-  std::string where;
+  SpecLocation where;
   int n = 4, k = 0;
   SeriesLook look;
 };
 
 struct SubdivisionElement {  // [[axes.subdivision]]
-  std::string where;
+  SpecLocation where;
   std::vector<Vec2> points;
   int steps = 1;
   bool limit = false;  // the limit points instead of the refined polygon
@@ -288,17 +305,17 @@ struct SubdivisionElement {  // [[axes.subdivision]]
 };
 
 struct LocalBetasElement {  // [[axes.local_betas]]: one (b1, b2) per knot
-  std::string where;
+  SpecLocation where;
   std::vector<Vec2> knots;
   std::vector<std::array<double, 2>> betas;
   Ends ends = Ends::open;
   SeriesLook look;
-  std::string origin;
+  SpecLocation origin;
 };
 
 struct InbetweenElement {  // [[axes.inbetween]]: frames between keyframes
   enum class Interpolation { Relaxed, Linear };
-  std::string where;
+  SpecLocation where;
   std::vector<std::vector<Vec2>> frames;  // equally long
   double t = 0;                           // the one frame drawn, when steps == 0
   int steps = 0;                          // > 0: a filmstrip, the frames at t = i / steps, 0 .. last keyframe
@@ -310,32 +327,32 @@ struct InbetweenElement {  // [[axes.inbetween]]: frames between keyframes
 };
 
 struct FilterCurveElement {  // [[axes.filter]]: k(s) of a filter spec
-  std::string where;
+  SpecLocation where;
   Kernel filter;  // a basis spec, box, tent or lanczos3, read as the kernel
   std::optional<std::array<double, 2>> range;  // default: the support
   SeriesLook look;
 };
 
 struct ResponseElement {  // [[axes.response]]: |K(f)|, f in cycles per sample
-  std::string where;
+  SpecLocation where;
   Kernel filter;
   std::array<double, 2> range{0, 2};
   SeriesLook look;
 };
 
 struct StepElement {  // [[axes.step]]: a filter's reconstruction of samples
-  std::string where;
+  SpecLocation where;
   Kernel filter;
   std::vector<double> values{0, 0, 0, 0, 1, 1, 1, 1};
   Edge edge = Edge::clamp;
   bool interpolating = false;
   std::optional<std::array<double, 2>> range;  // default: [-1/2, n - 1/2]
   SeriesLook look;
-  std::string origin;
+  SpecLocation origin;
 };
 
 struct ZoneplateElement {  // [[axes.zoneplate]]: a zone plate resampled, as an image
-  std::string where;
+  SpecLocation where;
   Kernel filter;
   int source = 64, size = 512;
   Edge edge = Edge::mirror;
@@ -344,7 +361,7 @@ struct ZoneplateElement {  // [[axes.zoneplate]]: a zone plate resampled, as an 
   std::array<double, 4> extent{};
   bool nearest = true;
   double contrast = 1;
-  std::string origin;
+  SpecLocation origin;
 };
 
 using PlotElement = std::variant<CurveElement, KernelElement, SeriesElement, FillElement, TextElement,
@@ -385,10 +402,10 @@ struct AxesSpec {
   std::optional<std::array<int, 2>> cell;       // [row, col] in the figure's layout grid
   std::optional<std::array<double, 4>> box;     // explicit pixel box [left, top, right, bottom]
   std::vector<PlotElement> elements;
-  std::string where;  // "file:line" of the [axes] header, for messages
-  // "FILE:LINE: KEY" of each element's table (parallel to `elements`), naming it in errors
-  // found while drawing; may be shorter (then messages name the axes).
-  std::vector<std::string> element_origins;
+  SpecLocation where;  // of the [axes] header (no key), for messages
+  // Of each element's table (parallel to `elements`), naming it in errors found while drawing;
+  // may be shorter (then messages name the axes).
+  std::vector<SpecLocation> element_origins;
 };
 
 using Item = std::variant<PolylineItem, PolygonItem, CircleItem, MarkerItem, TextItem, ImageItem, AxesSpec>;
@@ -408,7 +425,7 @@ struct CaptionField {
   std::string function; // point, x, y, d1, d2, curvature, max_y, ..., knot, count, b1, b2
   std::vector<double> args;
   int decimals = 2;
-  std::string origin;   // "FILE:LINE: caption_field[i]", for messages
+  SpecLocation origin;  // of its [[caption_field]] table, for messages
 };
 
 struct FigureSpec {
@@ -420,13 +437,13 @@ struct FigureSpec {
   bool show_title = true;
   double title_size = 18;
   render::FontFamily font_family = render::FontFamily::Sans;  // of every text without its own
-  std::string title_origin;  // "FILE:LINE: title_size" (or title), for messages
+  SpecLocation title_origin;  // of title_size (or title), for messages
   Canvas canvas;
   Layout layout;
   std::vector<Item> items;  // in document order
-  // "FILE:LINE: KEY" of each item's table (parallel to `items`), naming it in errors found
-  // while drawing; may be shorter (then messages name the file).
-  std::vector<std::string> item_origins;
+  // Of each item's table (parallel to `items`), naming it in errors found while drawing; may be
+  // shorter (then messages name the file).
+  std::vector<SpecLocation> item_origins;
 };
 
 // Reads and validates a spec file. Throws SpecFileError (one line: file, line, key).
