@@ -142,6 +142,7 @@ std::string index_json(const std::vector<FigureInfo>& figures) {
     list.push_back({{"name", f.name},
                     {"title", f.title},
                     {"caption", f.caption},
+                    {"source", f.source},
                     {"files", f.files},
                     {"width", f.width},
                     {"height", f.height},
@@ -160,6 +161,7 @@ std::vector<FigureInfo> read_index_json(const std::string& text) {
       info.name = f.at("name").get<std::string>();
       info.title = f.at("title").get<std::string>();
       info.caption = f.at("caption").get<std::string>();
+      info.source = f.value("source", std::string());  // absent in an index written before the key
       info.files = f.at("files").get<std::vector<std::string>>();
       info.width = f.at("width").get<int>();
       info.height = f.at("height").get<int>();
@@ -376,8 +378,12 @@ void figure_html(std::ostringstream& o, const FigureInfo& f) {
     << file_url(shown) << "\"><img src=\"" << file_url(shown) << "\"";
   // The vector file is the sharp source on high-density screens; a 1:1 figure keeps its pixels.
   if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << file_url(png) << " 1x, " << file_url(svg) << " 2x\"";
-  o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << title << "\"></a></div>\n"
-    << "  <figcaption><b>" << title << "</b> " << markup_html(f.caption) << "\n    <span class=\"files\">";
+  // The alt text describes the picture for a reader who cannot see it: its title and caption.
+  const std::string alt = f.caption.empty() ? title : title + ": " + html_text(detail::plain_text(f.caption));
+  o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << alt << "\"></a></div>\n"
+    << "  <figcaption><b>" << title << "</b>";
+  if (!f.source.empty()) o << "<span class=\"source\">" << html_text(f.source) << "</span>";
+  o << " " << markup_html(f.caption) << "\n    <span class=\"files\">";
   for (const auto& file : f.files) {
     const auto dot = file.find_last_of('.');
     std::string label = dot == std::string::npos ? file : file.substr(dot + 1);
@@ -405,7 +411,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
   h1 { font-size: clamp(20px, 3vw, 28px); margin: 0 0 4px; }
   h2 { font-size: clamp(17px, 2.2vw, 22px); margin: 28px 0 12px; border-bottom: 1px solid #ccc; padding-bottom: 4px; }
   nav a { margin-right: 14px; color: #1f5f99; }
-  .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, 440px), 1fr)); gap: clamp(10px, 2vw, 24px); }
+  .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, max(440px, 40%)), 1fr)); gap: clamp(10px, 2vw, 24px); }
   figure { margin: 0; background: #fff; border: 1px solid #ddd; padding: clamp(6px, 1.5vw, 12px); min-width: 0; }
   figure img { width: 100%; height: auto; display: block; }
   figure.natural { grid-column: 1 / -1; }
@@ -413,6 +419,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
   figure.natural img { width: auto; max-width: none; image-rendering: pixelated; }
   figcaption { font-size: 14px; margin-top: 8px; overflow-wrap: anywhere; }
   figcaption b { display: block; margin-bottom: 2px; }
+  figcaption .source { display: block; margin-bottom: 4px; font-size: 13px; color: #555; font-style: italic; }
   .files { display: block; margin-top: 6px; font-size: 12px; }
   .files a { margin-right: 10px; color: #1f5f99; }
   .files code { color: #777; }
@@ -466,6 +473,14 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
     document.body.setAttribute("data-images-ok", ok ? "yes" : "no");
     var wide = document.documentElement.scrollWidth > document.documentElement.clientWidth;
     document.body.setAttribute("data-overflow", wide ? "yes" : "no");
+    // The most cards side by side in any section (the page shows at most two).
+    var columns = 0;
+    document.querySelectorAll(".grid").forEach(function (grid) {
+      var lefts = {};
+      grid.querySelectorAll('figure:not(.natural)').forEach(function (f) { lefts[Math.round(f.getBoundingClientRect().left)] = 1; });
+      columns = Math.max(columns, Object.keys(lefts).length);
+    });
+    document.body.setAttribute("data-columns", String(columns));
   });
 </script>
 </body>

@@ -68,6 +68,17 @@ TEST_CASE("the gallery fits phones to wide screens: no horizontal overflow at 39
   CHECK(html.find("id=\"filters\"") != std::string::npos);
   CHECK(html.find("id=\"companions\"") != std::string::npos);
   CHECK(html.find("<figure id=\"filter-zoneplate\" class=\"natural\">") != std::string::npos);  // "at 1:1"
+  // Each card names the source figure it reproduces, and its image's alt text is its title and
+  // caption; index.json carries the source of every figure.
+  CHECK(html.find("<span class=\"source\">Smith, Spline Tutorial Notes (1983), Figure CBASIS</span>") != std::string::npos);
+  CHECK(html.find("<span class=\"source\">the curve notes (Cubic spline curves), Fig. 9</span>") != std::string::npos);
+  CHECK(html.find("alt=\"Cardinal spline basis function (Catmull-Rom, a = 0.5): ") != std::string::npos);
+  const Json index = parse_json(read_file(dir / "index.json"));
+  REQUIRE(index["figures"].size() >= 30);
+  for (size_t i = 0; i < index["figures"].size(); ++i) {
+    INFO(index["figures"][i]["name"].string);
+    CHECK_FALSE(index["figures"][i]["source"].string.empty());
+  }
   const std::string url = "file://" + fs::absolute(dir / "index.html").string();
   for (int w : {390, 800, 1280, 1920}) {
     const std::string flags = " --headless --no-sandbox --disable-gpu --allow-file-access-from-files"
@@ -77,6 +88,8 @@ TEST_CASE("the gallery fits phones to wide screens: no horizontal overflow at 39
     REQUIRE(dom.code == 0);
     CHECK(dom.out.find("data-images-ok=\"yes\"") != std::string::npos);
     CHECK(dom.out.find("data-overflow=\"no\"") != std::string::npos);
+    // At most two cards side by side; one below about 950 px (a phone, a narrow window).
+    CHECK(dom.out.find(w < 950 ? "data-columns=\"1\"" : "data-columns=\"2\"") != std::string::npos);
     // Screenshots to look at (build/test-figures/gallery-widths-*/gallery-<w>.png).
     run(chromium + flags + "--screenshot=" + (dir / ("gallery-" + std::to_string(w) + ".png")).string() + " " + url);
   }

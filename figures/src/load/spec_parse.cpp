@@ -303,6 +303,7 @@ FigureSpec read_spec(std::string_view text, const std::string& name, const std::
   spec.path = name;
   spec.title = r.label("title", "");
   spec.caption = r.string("caption", "");
+  spec.source = r.string("source", "");
   spec.caption_fields = parse_caption_fields(r, spec.caption, r.origin("caption"));
   spec.show_title = r.boolean("show_title", true);
   spec.title_size = r.positive("title_size", spec.title_size);

@@ -47,6 +47,7 @@ struct AxesInfo {
 
 struct FigureInfo {
   std::string name, title, caption;
+  std::string source;  // the source figure it reproduces (the spec's `source`), plain text
   int width = 0, height = 0;  // output pixels
   std::vector<AxesInfo> axes;
   std::vector<std::string> files;  // filled in by whoever writes the files

@@ -433,6 +433,7 @@ struct FigureSpec {
   std::string path;     // where it was read from
   std::string title;    // drawn at the top unless show_title = false; also in index/gallery
   std::string caption;  // gallery and index only; {=name} fields filled in when built
+  std::string source;   // the figure of the source texts it reproduces or illustrates, as a reader cites it
   std::vector<CaptionField> caption_fields;
   bool show_title = true;
   double title_size = 18;
