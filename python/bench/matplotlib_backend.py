@@ -96,16 +96,6 @@ def save(fig, backend):
     fig.savefig(buf, format="png", backend=backend)
 
 
-def cpu_best_of(reps, f):
-    """The least CPU time of the process (every thread's) over reps calls of f."""
-    best = float("inf")
-    for _ in range(reps):
-        t0 = time.process_time()
-        f()
-        best = min(best, time.process_time() - t0)
-    return best
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--reps", type=int, default=3)
@@ -126,8 +116,8 @@ def main():
         for _ in range(a.rounds):
             agg = min(agg, best_of(a.reps, lambda: save(fig, None)))
             ours = min(ours, best_of(a.reps, lambda: save(fig, BACKEND)))
-            agg_cpu = min(agg_cpu, cpu_best_of(a.reps, lambda: save(fig, None)))
-            ours_cpu = min(ours_cpu, cpu_best_of(a.reps, lambda: save(fig, BACKEND)))
+            agg_cpu = min(agg_cpu, best_of(a.reps, lambda: save(fig, None), clock=time.process_time))
+            ours_cpu = min(ours_cpu, best_of(a.reps, lambda: save(fig, BACKEND), clock=time.process_time))
         plt.close(fig)
         goal = 1.5 if "1e+06" in make.__name__ else 1.0
         mark = "" if agg / ours >= goal else " *"

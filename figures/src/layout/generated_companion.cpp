@@ -219,11 +219,12 @@ std::vector<GeneratedPart> parts_of(const InbetweenElement& e) {
     for (Vec2 q : frame) flat.insert(flat.end(), {q.x, q.y});
     keys.push_back(flat);
   }
-  const auto relaxed = std::make_shared<Interpolant>(interpolate_relaxed(keys));
+  const bool linear = e.interpolation == InbetweenElement::Interpolation::Linear;
+  const Interpolant relaxed = linear ? Interpolant{} : interpolate_relaxed(keys);
   auto frame_at = [&](double t, Vec2 moved) {
     std::vector<double> x(2 * m);
-    if (e.interpolation == InbetweenElement::Interpolation::Relaxed) {
-      evaluate(*relaxed, t, 0, x);
+    if (!linear) {
+      evaluate(relaxed, t, 0, x);
     } else {
       const std::size_t k = std::min(keys.size() - 2, static_cast<std::size_t>(std::floor(t)));
       const double u = t - static_cast<double>(k);
