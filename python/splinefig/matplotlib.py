@@ -10,14 +10,21 @@ pieces; the bytes are the same for any thread count). Text is drawn as the unhin
 outlines of matplotlib's own TextToPath, placed by the metrics matplotlib lays it out with, so
 a PNG does not depend on the FreeType hinting of the machine. Compositing blends sRGB-encoded
 values, as AGG does; ``blend="linear"`` (a savefig keyword, or ``BLEND`` below, or the
-environment variable SPLINEFIG_MPL_BLEND) blends in linear light instead. See docs/matplotlib.md.
+environment variable SPLINEFIG_MPL_BLEND) blends in linear light instead.
+
+An image drawn with ``interpolation="none"`` is resampled by splinefig's resampler when a kernel
+is named (``kernel="catmull-rom"`` as a savefig keyword, ``KERNEL``, the ``kernel(...)`` context
+manager or SPLINEFIG_MPL_KERNEL): matplotlib hands over its source pixels and transform, and
+the picture is exactly ``splinefig.resample`` of them to the image's size in device pixels.
+See docs/matplotlib.md.
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
 import os
-from typing import Any, Optional
+from typing import Any, Iterator, Optional, Union
 
 import numpy as np
 
@@ -28,14 +35,25 @@ from matplotlib.path import Path
 from matplotlib.textpath import TextToPath
 from matplotlib.transforms import Affine2D
 
-from . import Scene
+from . import Basis, Kernel, Scene, _choice, _kernel, _srgb_ints_to_linear, resample
 
-__all__ = ["FigureCanvasSplinefig", "RendererSplinefig", "FigureCanvas", "FigureManager", "BLEND", "THREADS"]
+__all__ = ["FigureCanvasSplinefig", "RendererSplinefig", "FigureCanvas", "FigureManager", "BLEND", "THREADS",
+           "KERNEL", "KERNEL_EDGE", "KERNEL_INTERPOLATING", "kernel"]
 
 #: The default blend space: "srgb" (as AGG) or "linear"; SPLINEFIG_MPL_BLEND overrides it.
 BLEND = "srgb"
 #: Rasterizer threads (0: all cores). The bytes do not depend on it.
 THREADS = 0
+#: The reconstruction filter of images drawn with interpolation="none": None (matplotlib's own
+#: resampling, as AGG) or a kernel spec ("catmull-rom", "cardinal:a=0.3", "bspline",
+#: "beta:b1=2,b2=0", "lanczos3", ...), a splinefig.Kernel or Basis; SPLINEFIG_MPL_KERNEL
+#: names one when this is None.
+KERNEL: Union[None, str, Kernel, Basis] = None
+#: The resampler's edge mode for those images: "clamp", "mirror", "wrap" or "black".
+KERNEL_EDGE = "clamp"
+#: Whether an approximating kernel (bspline, beta, ...) is made to interpolate the source
+#: pixels first (`splinefig resample --interpolating`).
+KERNEL_INTERPOLATING = False
 
 _CAPS = {"butt": "butt", "round": "round", "projecting": "square"}
 _HATCH_SIZE = 72  # points: matplotlib's hatch tile is one inch square, as in AGG
@@ -62,6 +80,156 @@ def _blend_of(value: Optional[str]) -> str:
     if b not in ("srgb", "linear"):
         raise ValueError(f"blend: unknown value '{b}' (known: srgb, linear)")
     return b
+
+
+class _ImageKernel:
+    """A resolved kernel choice: the kernel, its spec as given, the edge mode, the prefilter."""
+
+    def __init__(self, k: Kernel, spec: str, edge: str, interpolating: bool) -> None:
+        self.k, self.spec, self.edge, self.interpolating = k, spec, edge, interpolating
+
+
+def _kernel_of(value: Any, edge: Optional[str], interpolating: Optional[bool]) -> Optional[_ImageKernel]:
+    """The kernel choice of a draw: the keyword, else KERNEL, else $SPLINEFIG_MPL_KERNEL; False (or
+    an empty variable) is matplotlib's own resampling. Checked here, before anything is drawn: a
+    bad spec, edge mode, or a prefilter the kernel has no stable inverse for is a ValueError
+    naming the keyword."""
+    v = value if value is not None else KERNEL
+    if v is None:
+        v = os.environ.get("SPLINEFIG_MPL_KERNEL") or None
+    if v is None or v is False:
+        return None
+    k = _kernel(v, "kernel")
+    e = _choice(KERNEL_EDGE if edge is None else edge, "kernel_edge", ("clamp", "mirror", "wrap", "black"))
+    i = KERNEL_INTERPOLATING if interpolating is None else interpolating
+    if not isinstance(i, (bool, np.bool_)):
+        raise TypeError(f"kernel_interpolating: expected True or False, got {type(i).__name__}")
+    if i:
+        try:  # the prefilter's stability is the kernel's: a 3 x 3 picture says it now
+            resample(np.zeros((3, 3), np.float32), size=(3, 3), filter=k, edge=e, interpolating=True, threads=1)
+        except ValueError as err:
+            raise ValueError(f"kernel_interpolating: {err}") from None
+    return _ImageKernel(k, v if isinstance(v, str) else repr(v), e, bool(i))
+
+
+@contextlib.contextmanager
+def kernel(spec: Union[str, Kernel, Basis], *, edge: str = "clamp", interpolating: bool = False) -> Iterator[None]:
+    """Within the block, images drawn with interpolation="none" are resampled with this kernel
+    (KERNEL, KERNEL_EDGE and KERNEL_INTERPOLATING set, and restored after):
+
+        with splinefig.matplotlib.kernel("catmull-rom"):
+            fig.savefig("plot.png", backend="module://splinefig.matplotlib")
+    """
+    global KERNEL, KERNEL_EDGE, KERNEL_INTERPOLATING
+    _kernel_of(spec, edge, interpolating)  # a bad choice is refused at the with statement
+    old = KERNEL, KERNEL_EDGE, KERNEL_INTERPOLATING
+    KERNEL, KERNEL_EDGE, KERNEL_INTERPOLATING = spec, edge, interpolating
+    try:
+        yield
+    finally:
+        KERNEL, KERNEL_EDGE, KERNEL_INTERPOLATING = old
+
+
+def _round_half_away(v: float) -> int:
+    return int(math.floor(v + 0.5) if v >= 0 else math.ceil(v - 0.5))
+
+
+def _edge_indices(j: np.ndarray, n: int, edge: str) -> np.ndarray:
+    """Source indices of extended positions j under an edge mode (-1: black), as the resampler
+    reads them (docs/resample.md)."""
+    if edge == "clamp":
+        return np.clip(j, 0, n - 1)
+    if edge == "wrap":
+        return np.mod(j, n)
+    if edge == "mirror":
+        r = np.mod(j, 2 * n)
+        return np.where(r < n, r, 2 * n - 1 - r)
+    return np.where((j >= 0) & (j < n), j, -1)
+
+
+def _prefiltered(src: np.ndarray, ik: "_ImageKernel") -> np.ndarray:
+    """The coefficients that make an approximating kernel interpolate src (float64, (h, w, c)):
+    along every row and then every column, solve k(1) c[i-1] + k(0) c[i] + k(-1) c[i+1] = p[i]
+    with c extended by the edge mode (docs/resample.md, --interpolating)."""
+    from . import _core
+    s = np.asarray(_core.kernel_values(ik.k, np.array([-1.0, 0.0, 1.0])), dtype=np.float64)
+    s = s / s.sum()
+    left, centre, right = s[0], s[1], s[2]  # the coefficients of c[i+1], c[i], c[i-1]
+    c = np.array(src, dtype=np.float64)
+    for axis in (1, 0):
+        c = np.moveaxis(c, axis, 0)
+        n = c.shape[0]
+        if ik.edge == "wrap":
+            row = np.zeros(n)
+            row[0] += centre
+            row[1 % n] += right
+            row[-1 % n] += left
+            c = np.real(np.fft.ifft(np.fft.fft(c, axis=0) / np.fft.fft(row)[(slice(None),) + (None,) * (c.ndim - 1)], axis=0))
+        else:
+            # Tridiagonal (Thomas): sub-diagonal right, diagonal centre, super-diagonal left; clamp
+            # and mirror extend c by c[-1] = c[0], c[n] = c[n-1], black by zeros.
+            diag = np.full(n, centre)
+            if ik.edge != "black":
+                diag[0] += right
+                diag[-1] += left
+            cp = np.zeros(n)
+            d = np.empty_like(c)
+            cp[0] = left / diag[0] if n > 1 else 0.0
+            d[0] = c[0] / diag[0]
+            for i in range(1, n):
+                den = diag[i] - right * cp[i - 1]
+                cp[i] = left / den
+                d[i] = (c[i] - right * d[i - 1]) / den
+            for i in range(n - 2, -1, -1):
+                d[i] -= cp[i] * d[i + 1]
+            c = d
+        c = np.moveaxis(c, 0, axis)
+    return c
+
+
+def _kernel_sums(src: np.ndarray, inv: np.ndarray, f: tuple, box: tuple, ik: "_ImageKernel",
+                 inside: bool = False, sign: tuple = (1.0, 1.0)) -> np.ndarray:
+    """The resampler's sum evaluated directly for the canvas pixels of box (x0, y0, x1, y1): pixel
+    (X, Y)'s centre maps by inv (2 x 3) to the source position (u, v), and its value is
+    sum_ij wx_i wy_j p[j, i] with wx_i = k(sx (u - (i + 1/2)) / fx) normalised to sum 1 (wy
+    likewise; sx = -1 runs the kernel against the axis, as resampling the flipped source
+    does), positions outside the source read by the edge mode. With inside, a pixel whose
+    centre maps outside the source is left empty. src: (h, w, 4) linear, associated alpha."""
+    from . import _core
+    h, w = src.shape[:2]
+    coef = _prefiltered(src, ik) if ik.interpolating else np.asarray(src, dtype=np.float64)
+    x0, y0, x1, y1 = box
+    yy, xx = np.mgrid[y0:y1, x0:x1].astype(np.float64) + 0.5
+    u = inv[0, 0] * xx + inv[0, 1] * yy + inv[0, 2]
+    v = inv[1, 0] * xx + inv[1, 1] * yy + inv[1, 2]
+    lo, hi = ik.k.support
+
+    def weights(pos, fac, sgn, n):
+        # Taps where sgn (pos - (j + 1/2)) / fac lies in the support [lo, hi).
+        top = hi if sgn > 0 else -lo
+        first = np.floor(pos - 0.5 - top * fac)
+        taps = int(math.ceil((hi - lo) * fac)) + 2
+        j = first[..., None] + np.arange(taps)
+        arg = sgn * (pos[..., None] - (j + 0.5)) / fac
+        wt = np.asarray(_core.kernel_values(ik.k, np.ascontiguousarray(arg.ravel()))).reshape(j.shape)
+        total = wt.sum(axis=-1, keepdims=True)
+        wt = np.divide(wt, total, out=np.zeros_like(wt), where=total != 0)
+        return _edge_indices(j.astype(np.int64), n, ik.edge), wt
+
+    ix, wx = weights(u, f[0], sign[0], w)
+    iy, wy = weights(v, f[1], sign[1], h)
+    out = np.zeros(u.shape + (src.shape[2],), dtype=np.float64)
+    for b in range(iy.shape[-1]):
+        rows = iy[..., b]
+        for a_ in range(ix.shape[-1]):
+            cols = ix[..., a_]
+            wgt = wy[..., b] * wx[..., a_]
+            ok = (rows >= 0) & (cols >= 0)
+            val = coef[np.where(ok, rows, 0), np.where(ok, cols, 0)]
+            out += np.where(ok, wgt, 0.0)[..., None] * val
+    if inside:
+        out[~((u >= 0) & (u < w) & (v >= 0) & (v < h))] = 0.0
+    return out
 
 
 _HINTING_FACTOR = 8  # matplotlib's default text.hinting_factor
@@ -170,8 +338,11 @@ class _Target:
 class RendererSplinefig(RendererBase):
     """Draws a figure into one splinefig Scene (pixels, y down, as AGG's buffer)."""
 
-    def __init__(self, width: float, height: float, dpi: float, *, blend: Optional[str] = None, threads: Optional[int] = None) -> None:
+    def __init__(self, width: float, height: float, dpi: float, *, blend: Optional[str] = None, threads: Optional[int] = None,
+                 kernel: Union[None, bool, str, Kernel, Basis] = None, kernel_edge: Optional[str] = None,
+                 kernel_interpolating: Optional[bool] = None) -> None:
         super().__init__()
+        self.image_kernel = _kernel_of(kernel, kernel_edge, kernel_interpolating)
         self.dpi = dpi
         self.width = int(math.ceil(width))
         self.height = int(math.ceil(height))
@@ -198,7 +369,10 @@ class RendererSplinefig(RendererBase):
         return True  # as AGG: each image is drawn by itself
 
     def option_scale_image(self):
-        return False  # images arrive resampled to the canvas's pixels
+        # Images arrive resampled to the canvas's pixels by matplotlib, but for those drawn with
+        # interpolation="none" when a kernel is chosen: they come as their source pixels with
+        # their transform, and draw_image resamples them.
+        return self.image_kernel is not None
 
     # ---- clipping ---------------------------------------------------------------------
     def _clip_box(self, gc):
@@ -791,6 +965,9 @@ class RendererSplinefig(RendererBase):
         t.items += 1
 
     def draw_image(self, gc, x, y, im, transform=None):
+        if transform is not None:
+            self._draw_image_kernel(gc, x, y, im, transform)
+            return
         t = self._target(gc, raster=True)
         if t is None:
             return
@@ -820,6 +997,100 @@ class RendererSplinefig(RendererBase):
             t.core.images(f, np.array([[cx0 - t.x0, cy0 - t.y0]], dtype=np.float64), "srgb")
         else:
             t.core.image(np.ascontiguousarray(a, dtype=np.uint8), cx0 - t.x0, cy0 - t.y0, cx1 - t.x0, cy1 - t.y0, "nearest")
+        t.items += 1
+
+    # ---- images resampled with a splinefig kernel ------------------------------------------
+    _DIRECT_LIMIT = 1 << 24  # device pixels of an image resampled whole before it is cropped
+
+    def _resample_whole(self, dw: int, dh: int) -> bool:
+        """Whether an axis-aligned image of dw x dh canvas pixels is resampled whole and then
+        cropped (bounded by 2^24 pixels or four canvases), or only its visible pixels summed."""
+        return dw <= 65536 and dh <= 65536 and dw * dh <= max(self._DIRECT_LIMIT, 4 * self.width * self.height)
+
+    def _draw_image_kernel(self, gc, x, y, im, transform) -> None:
+        """An image drawn with interpolation="none" while a kernel is chosen: im holds its source
+        pixels (matplotlib's colours, uint8 sRGB with straight alpha, row 0 at v = 0 of the unit
+        square), transform maps the unit square to canvas pixels (y up) from (x, y).
+
+        Axis-aligned (scaled, translated, flipped): the image's rectangle is rounded to whole
+        pixels (its left and bottom edges as AGG rounds an image's place, its width and height
+        to the nearest whole number) and the source resampled to exactly that size by
+        splinefig.resample, in linear light as `splinefig resample` does, then cropped to the
+        clip rectangle. Rotated or skewed: each canvas pixel whose centre falls inside the image
+        is the same kernel sum evaluated at the source position its centre maps to."""
+        t = self._target(gc, raster=True)
+        if t is None:
+            return
+        a = np.asarray(im)
+        if a.ndim != 3 or a.shape[2] != 4 or a.size == 0:
+            return
+        if a.dtype != np.uint8:
+            a = np.round(np.clip(np.asarray(a, dtype=np.float64), 0.0, 1.0) * 255).astype(np.uint8)
+        ik = self.image_kernel
+        h, w = a.shape[:2]
+        H = self.height
+        m = transform.frozen().get_matrix()
+        # Source pixel coordinates (i, j) (pixel (i, j) covers [i, i+1] x [j, j+1]) to canvas
+        # pixels, y down: P = A (i, j) + p0.
+        A = np.array([[m[0, 0] / w, m[0, 1] / h], [-m[1, 0] / w, -m[1, 1] / h]], dtype=np.float64)
+        p0 = np.array([x + m[0, 2], H - (y + m[1, 2])], dtype=np.float64)
+        if not (np.isfinite(A).all() and np.isfinite(p0).all()):
+            return
+        det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
+        if det == 0:
+            return
+        big = float(np.abs(A).max())
+        alpha = gc.get_alpha()
+        alpha = 1.0 if alpha is None else float(alpha)
+        if abs(A[0, 1]) <= 1e-9 * big and abs(A[1, 0]) <= 1e-9 * big:
+            src = a[:, ::-1] if A[0, 0] < 0 else a   # the source as it shows: left to right,
+            src = src[::-1] if A[1, 1] < 0 else src  # top to bottom
+            left, right = sorted((p0[0], p0[0] + A[0, 0] * w))
+            top, bottom = sorted((p0[1], p0[1] + A[1, 1] * h))
+            dw = max(1, _round_half_away(right - left))
+            dh = max(1, _round_half_away(bottom - top))
+            x0 = _round_half_away(left)
+            y0 = H - _round_half_away(H - bottom) - dh
+            cx0, cy0 = max(x0, t.box[0]), max(y0, t.box[1])
+            cx1, cy1 = min(x0 + dw, t.box[2]), min(y0 + dh, t.box[3])
+            if cx1 <= cx0 or cy1 <= cy0:
+                return
+            if self._resample_whole(dw, dh):
+                out = resample(np.ascontiguousarray(src), size=(dw, dh), filter=ik.k, edge=ik.edge,
+                               interpolating=ik.interpolating, threads=self.threads)
+                out = out[cy0 - y0:cy1 - y0, cx0 - x0:cx1 - x0]
+            else:
+                # Much larger than the canvas (an image zoomed far in): the same sums, for the
+                # visible pixels only. Output pixel X's centre maps to the source position
+                # (X - x0 + 1/2) S / D, as in the resampler.
+                inv = np.array([[w / dw, 0.0, -x0 * w / dw], [0.0, h / dh, -y0 * h / dh]])
+                out = _kernel_sums(_srgb_ints_to_linear(np.ascontiguousarray(src)), inv, (max(1.0, w / dw), max(1.0, h / dh)),
+                                   (cx0, cy0, cx1, cy1), ik)
+        else:
+            corners = p0 + np.array([[0, 0], [w, 0], [0, h], [w, h]], dtype=np.float64) @ A.T
+            cx0 = max(int(math.floor(corners[:, 0].min())), t.box[0])
+            cy0 = max(int(math.floor(corners[:, 1].min())), t.box[1])
+            cx1 = min(int(math.ceil(corners[:, 0].max())), t.box[2])
+            cy1 = min(int(math.ceil(corners[:, 1].max())), t.box[3])
+            if cx1 <= cx0 or cy1 <= cy0:
+                return
+            Ai = np.array([[A[1, 1], -A[0, 1]], [-A[1, 0], A[0, 0]]]) / det
+            inv = np.column_stack([Ai, -Ai @ p0])
+            # Widened along each source axis by how much it is reduced, as the resampler widens;
+            # an asymmetric kernel oriented along each axis as its picture on the canvas runs
+            # (right or down by its larger component), as a flipped image's is.
+            f = (max(1.0, 1.0 / math.hypot(A[0, 0], A[1, 0])), max(1.0, 1.0 / math.hypot(A[0, 1], A[1, 1])))
+            sign = tuple(1.0 if (A[0, k] if abs(A[0, k]) >= abs(A[1, k]) else A[1, k]) > 0 else -1.0 for k in (0, 1))
+            out = _kernel_sums(_srgb_ints_to_linear(a), inv, f, (cx0, cy0, cx1, cy1), ik, inside=True, sign=sign)
+        out = np.array(out, dtype=np.float32)
+        if alpha < 1:
+            out *= np.float32(alpha)
+        # Within what a pixel can hold: alpha in [0, 1], colour in [0, alpha] (a kernel with
+        # negative lobes overshoots; the resampler's PNG output is clamped the same way).
+        np.clip(out[:, :, 3], 0.0, 1.0, out=out[:, :, 3])
+        out[:, :, :3] = np.clip(out[:, :, :3], 0.0, out[:, :, 3:])
+        self._for_rasters(t)
+        t.core.images(np.ascontiguousarray(out), np.array([[cx0 - t.x0, cy0 - t.y0]], dtype=np.float64), "linear")
         t.items += 1
 
     def get_text_width_height_descent(self, s, prop, ismath):
@@ -877,13 +1148,19 @@ class FigureCanvasSplinefig(FigureCanvasBase):
     def get_default_filetype(self):
         return "png"
 
-    def get_renderer(self, *, blend: Optional[str] = None, threads: Optional[int] = None) -> RendererSplinefig:
+    def get_renderer(self, *, blend: Optional[str] = None, threads: Optional[int] = None,
+                     kernel: Union[None, bool, str, Kernel, Basis] = None, kernel_edge: Optional[str] = None,
+                     kernel_interpolating: Optional[bool] = None) -> RendererSplinefig:
         w, h = self.figure.bbox.size
-        self.renderer = RendererSplinefig(w, h, self.figure.dpi, blend=blend, threads=threads)
+        self.renderer = RendererSplinefig(w, h, self.figure.dpi, blend=blend, threads=threads, kernel=kernel,
+                                          kernel_edge=kernel_edge, kernel_interpolating=kernel_interpolating)
         return self.renderer
 
-    def draw(self, *, blend: Optional[str] = None, threads: Optional[int] = None) -> None:
-        r = self.get_renderer(blend=blend, threads=threads)
+    def draw(self, *, blend: Optional[str] = None, threads: Optional[int] = None,
+             kernel: Union[None, bool, str, Kernel, Basis] = None, kernel_edge: Optional[str] = None,
+             kernel_interpolating: Optional[bool] = None) -> None:
+        r = self.get_renderer(blend=blend, threads=threads, kernel=kernel, kernel_edge=kernel_edge,
+                              kernel_interpolating=kernel_interpolating)
         self.figure.draw(r)
         self._buffer = r.rgba8()
         super().draw()
@@ -894,18 +1171,25 @@ class FigureCanvasSplinefig(FigureCanvasBase):
             self.draw()
         return memoryview(self._buffer)
 
-    def print_raw(self, filename_or_obj, *, blend: Optional[str] = None, threads: Optional[int] = None, **kwargs):
-        self.draw(blend=blend, threads=threads)
+    def print_raw(self, filename_or_obj, *, blend: Optional[str] = None, threads: Optional[int] = None,
+                  kernel: Union[None, bool, str, Kernel, Basis] = None, kernel_edge: Optional[str] = None,
+                  kernel_interpolating: Optional[bool] = None, **kwargs):
+        self.draw(blend=blend, threads=threads, kernel=kernel, kernel_edge=kernel_edge,
+                  kernel_interpolating=kernel_interpolating)
         with cbook.open_file_cm(filename_or_obj, "wb") as fh:
             fh.write(self._buffer.tobytes())
 
     print_rgba = print_raw
 
     def print_png(self, filename_or_obj, *, metadata=None, pil_kwargs=None, blend: Optional[str] = None,
-                  threads: Optional[int] = None, **kwargs):
+                  threads: Optional[int] = None, kernel: Union[None, bool, str, Kernel, Basis] = None,
+                  kernel_edge: Optional[str] = None, kernel_interpolating: Optional[bool] = None, **kwargs):
         """Writes the figure as a PNG (through matplotlib's PIL writer, as AGG's canvas does);
-        blend: "srgb" or "linear" (default BLEND); threads: rasterizer threads."""
-        self.draw(blend=blend, threads=threads)
+        blend: "srgb" or "linear" (default BLEND); threads: rasterizer threads; kernel,
+        kernel_edge, kernel_interpolating: the resampling of interpolation="none" images
+        (default KERNEL, KERNEL_EDGE, KERNEL_INTERPOLATING; False: matplotlib's own)."""
+        self.draw(blend=blend, threads=threads, kernel=kernel, kernel_edge=kernel_edge,
+                  kernel_interpolating=kernel_interpolating)
         mpl.image.imsave(filename_or_obj, self._buffer, format="png", origin="upper", dpi=self.figure.dpi,
                          metadata=metadata, pil_kwargs=pil_kwargs)
 
