@@ -188,13 +188,13 @@ def _prefiltered(src: np.ndarray, ik: "_ImageKernel") -> np.ndarray:
 
 
 def _kernel_sums(src: np.ndarray, inv: np.ndarray, f: tuple, box: tuple, ik: "_ImageKernel",
-                 inside: bool = False, sign: tuple = (1.0, 1.0)) -> np.ndarray:
+                 sign: tuple = (1.0, 1.0)) -> np.ndarray:
     """The resampler's sum evaluated directly for the canvas pixels of box (x0, y0, x1, y1): pixel
     (X, Y)'s centre maps by inv (2 x 3) to the source position (u, v), and its value is
     sum_ij wx_i wy_j p[j, i] with wx_i = k(sx (u - (i + 1/2)) / fx) normalised to sum 1 (wy
     likewise; sx = -1 runs the kernel against the axis, as resampling the flipped source
-    does), positions outside the source read by the edge mode. With inside, a pixel whose
-    centre maps outside the source is left empty. src: (h, w, 4) linear, associated alpha."""
+    does), positions outside the source read by the edge mode. src: (h, w, 4) linear,
+    associated alpha."""
     from . import _core
     h, w = src.shape[:2]
     coef = _prefiltered(src, ik) if ik.interpolating else np.asarray(src, dtype=np.float64)
@@ -227,8 +227,6 @@ def _kernel_sums(src: np.ndarray, inv: np.ndarray, f: tuple, box: tuple, ik: "_I
             ok = (rows >= 0) & (cols >= 0)
             val = coef[np.where(ok, rows, 0), np.where(ok, cols, 0)]
             out += np.where(ok, wgt, 0.0)[..., None] * val
-    if inside:
-        out[~((u >= 0) & (u < w) & (v >= 0) & (v < h))] = 0.0
     return out
 
 
@@ -1016,8 +1014,8 @@ class RendererSplinefig(RendererBase):
         pixels (its left and bottom edges as AGG rounds an image's place, its width and height
         to the nearest whole number) and the source resampled to exactly that size by
         splinefig.resample, in linear light as `splinefig resample` does, then cropped to the
-        clip rectangle. Rotated or skewed: each canvas pixel whose centre falls inside the image
-        is the same kernel sum evaluated at the source position its centre maps to."""
+        clip rectangle. Rotated or skewed: each canvas pixel is the same kernel sum evaluated at
+        the source position its centre maps to, times the area of the pixel the image covers."""
         t = self._target(gc, raster=True)
         if t is None:
             return
@@ -1081,7 +1079,12 @@ class RendererSplinefig(RendererBase):
             # (right or down by its larger component), as a flipped image's is.
             f = (max(1.0, 1.0 / math.hypot(A[0, 0], A[1, 0])), max(1.0, 1.0 / math.hypot(A[0, 1], A[1, 1])))
             sign = tuple(1.0 if (A[0, k] if abs(A[0, k]) >= abs(A[1, k]) else A[1, k]) > 0 else -1.0 for k in (0, 1))
-            out = _kernel_sums(_srgb_ints_to_linear(a), inv, f, (cx0, cy0, cx1, cy1), ik, inside=True, sign=sign)
+            out = _kernel_sums(_srgb_ints_to_linear(a), inv, f, (cx0, cy0, cx1, cy1), ik, sign=sign)
+            # The image's parallelogram covers each pixel by its exact area: its edges are
+            # antialiased as a filled path's (a pixel's value is the sum at its centre, read
+            # by the edge mode where the centre is outside, times that area).
+            quad = Path(corners[[0, 1, 3, 2, 0]], [Path.MOVETO, Path.LINETO, Path.LINETO, Path.LINETO, Path.CLOSEPOLY])
+            out *= self._coverage(quad, cx0, cy0, cx1 - cx0, cy1 - cy0)[:, :, None]
         out = np.array(out, dtype=np.float32)
         if alpha < 1:
             out *= np.float32(alpha)
