@@ -187,6 +187,12 @@ def _prefiltered(src: np.ndarray, ik: "_ImageKernel") -> np.ndarray:
     return c
 
 
+def _taps(ik: "_ImageKernel", fac: float) -> int:
+    """Taps per axis of the direct sums with the kernel widened by fac."""
+    lo, hi = ik.k.support
+    return int(math.ceil((hi - lo) * fac)) + 2
+
+
 def _kernel_sums(src: np.ndarray, inv: np.ndarray, f: tuple, box: tuple, ik: "_ImageKernel",
                  sign: tuple = (1.0, 1.0)) -> np.ndarray:
     """The resampler's sum evaluated directly for the canvas pixels of box (x0, y0, x1, y1): pixel
@@ -208,7 +214,7 @@ def _kernel_sums(src: np.ndarray, inv: np.ndarray, f: tuple, box: tuple, ik: "_I
         # Taps where sgn (pos - (j + 1/2)) / fac lies in the support [lo, hi).
         top = hi if sgn > 0 else -lo
         first = np.floor(pos - 0.5 - top * fac)
-        taps = int(math.ceil((hi - lo) * fac)) + 2
+        taps = _taps(ik, fac)
         j = first[..., None] + np.arange(taps)
         arg = sgn * (pos[..., None] - (j + 0.5)) / fac
         wt = np.asarray(_core.kernel_values(ik.k, np.ascontiguousarray(arg.ravel()))).reshape(j.shape)
@@ -999,6 +1005,7 @@ class RendererSplinefig(RendererBase):
 
     # ---- images resampled with a splinefig kernel ------------------------------------------
     _DIRECT_LIMIT = 1 << 24  # device pixels of an image resampled whole before it is cropped
+    _DIRECT_WORK = 1 << 24   # pixels times taps of the sums evaluated directly (about 2 s of CPU)
 
     def _resample_whole(self, dw: int, dh: int) -> bool:
         """Whether an axis-aligned image of dw x dh canvas pixels is resampled whole and then
@@ -1079,7 +1086,24 @@ class RendererSplinefig(RendererBase):
             # (right or down by its larger component), as a flipped image's is.
             f = (max(1.0, 1.0 / math.hypot(A[0, 0], A[1, 0])), max(1.0, 1.0 / math.hypot(A[0, 1], A[1, 1])))
             sign = tuple(1.0 if (A[0, k] if abs(A[0, k]) >= abs(A[1, k]) else A[1, k]) > 0 else -1.0 for k in (0, 1))
-            out = _kernel_sums(_srgb_ints_to_linear(a), inv, f, (cx0, cy0, cx1, cy1), ik, sign=sign)
+            box = (cx0, cy0, cx1, cy1)
+            if (cx1 - cx0) * (cy1 - cy0) * _taps(ik, f[0]) * _taps(ik, f[1]) <= self._DIRECT_WORK:
+                out = _kernel_sums(_srgb_ints_to_linear(a), inv, f, box, ik, sign=sign)
+            else:
+                # Reduced far (a large image turned onto few pixels): the source is first reduced
+                # along its own axes by the resampler to about one pixel per canvas pixel (sides
+                # ceil(w / fx) and ceil(h / fy), the kernel oriented as below), and the sums are
+                # taken on that picture, so that work and memory stay bounded by the canvas.
+                nw, nh = max(1, math.ceil(w / f[0])), max(1, math.ceil(h / f[1]))
+                turned = a[:, ::-1] if sign[0] < 0 else a
+                turned = turned[::-1] if sign[1] < 0 else turned
+                small = resample(np.ascontiguousarray(turned), size=(nw, nh), filter=ik.k, edge=ik.edge,
+                                 interpolating=ik.interpolating, threads=self.threads)
+                small = small[:, ::-1] if sign[0] < 0 else small
+                small = small[::-1] if sign[1] < 0 else small
+                inv = np.diag([nw / w, nh / h]) @ inv
+                f = (max(1.0, f[0] * nw / w), max(1.0, f[1] * nh / h))
+                out = _kernel_sums(np.ascontiguousarray(small), inv, f, box, ik, sign=sign)
             # The image's parallelogram covers each pixel by its exact area: its edges are
             # antialiased as a filled path's (a pixel's value is the sum at its centre, read
             # by the edge mode where the centre is outside, times that area).

@@ -336,6 +336,40 @@ def test_scipy_affine_transform_on_a_rotated_image():
     assert worst <= 0.5 / 255 + 1e-6
 
 
+@pytest.mark.parametrize("spec", ["catmull-rom", "bspline"])
+def test_a_large_turned_image_is_reduced_first(monkeypatch, spec):
+    # A 400x300 image turned by 180 degrees plus the 3-4-5 angle (both source axes run against
+    # the canvas's, so the source is turned over before the first stage and back after it) and
+    # reduced 4 times: the sums taken directly
+    # (6 x 10^4 pixels times 22 x 22 taps) against the work bound forced to 0, where the
+    # source is first reduced along its axes by the resampler to about a pixel per canvas pixel
+    # and then summed with the kernel unwidened. On smooth data the two agree within 3 levels,
+    # 0.2 on average (measured: catmull-rom 2 and 0.013, bspline 3 and 0.099).
+    import splinefig.matplotlib as backend
+
+    h, w = 300, 400
+    yy, xx = np.mgrid[0:h, 0:w]
+    rgb = np.stack([127 + 100 * np.sin(xx / 23.0), 127 + 100 * np.cos(yy / 31.0), 127 + 90 * np.sin((xx + yy) / 41.0)],
+                   axis=2).astype(np.uint8)
+    src = np.dstack([rgb, np.full((h, w), 255, np.uint8)])
+    W, H = 160, 130
+    turn = Affine2D.from_values(-0.2, -0.15, 0.15, -0.2, 100.0, 125.0)
+
+    def draw():
+        fig, ax = canvas(W, H)
+        show(ax, src, W, H, transform=turn)
+        got = png(fig, kernel=spec)
+        plt.close(fig)
+        return got
+
+    direct = draw()
+    monkeypatch.setattr(backend.RendererSplinefig, "_DIRECT_WORK", 0)
+    reduced = draw()
+    d = np.abs(direct - reduced)
+    assert d.max() <= 3 and d.mean() <= 0.2, (d.max(), d.mean())
+    assert (direct[65, 82, :3] != 255).any()  # the image is there
+
+
 def test_without_a_kernel_nothing_changes():
     # No kernel: interpolation="none" is matplotlib's (AGG's nearest) as before, the same bytes
     # as kernel=False; with a kernel, an image of another interpolation is the same bytes too.
