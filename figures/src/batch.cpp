@@ -1,6 +1,7 @@
 // Figures rendered in parallel, their results handed back in spec order (see batch.hpp).
 #include <splinefig/figures/batch.hpp>
 #include <splinefig/base/parallel.hpp>
+#include <splinefig/figures/animation.hpp>
 #include <splinefig/figures/output.hpp>
 #include <splinefig/image/atomic_file.hpp>
 #include <splinefig/image/io.hpp>
@@ -39,6 +40,17 @@ std::uint64_t figure_bytes(double pixels, const BatchOptions& o) {
   return static_cast<std::uint64_t>(pixels * (raster ? 24 : 4));
 }
 
+// Whether the batch writes PNG files, and with them each [animation]'s WebP.
+bool writes_png(const BatchOptions& o) { return std::find(o.formats.begin(), o.formats.end(), Format::png) != o.formats.end(); }
+
+// The bytes an animation holds while one frame is drawn and encoded: the frame's float RGBA
+// canvas and 8-bit values (20 a pixel), and the encoder's current, previous and candidate
+// canvases (12 a pixel).
+std::uint64_t animation_bytes(const FigureSpec& spec, const BatchOptions& o) {
+  if (!spec.animation || !writes_png(o)) return 0;
+  return static_cast<std::uint64_t>(std::round(spec.animation->width * o.scale) * std::round(spec.animation->height * o.scale) * 32);
+}
+
 BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_threads, MemoryBudget& budget) {
   const auto t0 = std::chrono::steady_clock::now();
   const double c0 = thread_cpu_ms();
@@ -55,9 +67,11 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
       canvas = buf;
     }
     check_scaled_canvas(spec, o.scale, "--scale");
+    if (writes_png(o)) check_animation_size(spec, o.scale);
     // Waits until the figure's bytes fit beside those of the figures under way.
     const MemoryBudget::Grant grant = budget.acquire(
-        figure_bytes(std::round(spec.canvas.width * o.scale) * std::round(spec.canvas.height * o.scale), o));
+        figure_bytes(std::round(spec.canvas.width * o.scale) * std::round(spec.canvas.height * o.scale), o) +
+        animation_bytes(spec, o));
     FigureScene fig = figure_scene(spec, o.scale);
     FigureFileOptions w;
     w.scale = o.scale;
@@ -71,6 +85,15 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
       const std::string file = s.name + "." + extension(format);
       write_figure_file(fig, (std::filesystem::path(o.out_dir) / file).string(), format, w, raster);
       fig.info.files.push_back(file);
+    }
+    // The filmstrips' animation beside the PNG, drawn after the still figure's files.
+    if (spec.animation && writes_png(o)) {
+      raster.reset();
+      const std::string file = s.name + ".webp";
+      AnimationInfo a = write_animation(spec, (std::filesystem::path(o.out_dir) / file).string(), o.scale, raster_threads);
+      a.file = file;
+      fig.info.files.push_back(file);
+      fig.info.animation = std::move(a);
     }
     result.info = std::move(fig.info);
   } catch (const std::bad_alloc&) {
@@ -198,6 +221,7 @@ void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& option
       paths.push_back(s.path);
       for (const auto& format : options.formats)
         outputs.push_back((std::filesystem::path(options.out_dir) / (s.name + "." + extension(format))).string());
+      if (writes_png(options)) outputs.push_back((std::filesystem::path(options.out_dir) / (s.name + ".webp")).string());
     }
     for (const char* index : {"index.json", "index.html"}) outputs.push_back((std::filesystem::path(options.out_dir) / index).string());
     if (std::string bad = output_over(outputs, paths, inputs); !bad.empty())

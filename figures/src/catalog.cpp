@@ -139,14 +139,21 @@ std::string index_json(const std::vector<FigureInfo>& figures) {
                       {"y_scale", scale_name(ax.y_scale)},
                       {"series", std::move(series)}});
     }
-    list.push_back({{"name", f.name},
-                    {"title", f.title},
-                    {"caption", f.caption},
-                    {"source", f.source},
-                    {"files", f.files},
-                    {"width", f.width},
-                    {"height", f.height},
-                    {"axes", std::move(axes)}});
+    Json entry = {{"name", f.name},
+                  {"title", f.title},
+                  {"caption", f.caption},
+                  {"source", f.source},
+                  {"files", f.files},
+                  {"width", f.width},
+                  {"height", f.height},
+                  {"axes", std::move(axes)}};
+    if (!f.animation.file.empty())
+      entry["animation"] = {{"file", f.animation.file},
+                            {"width", f.animation.width},
+                            {"height", f.animation.height},
+                            {"frames", f.animation.frames},
+                            {"alt", f.animation.alt}};
+    list.push_back(std::move(entry));
   }
   // Non-finite numbers become null; text that is not UTF-8 is kept readable (U+FFFD).
   return Json{{"figures", std::move(list)}}.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
@@ -165,6 +172,13 @@ std::vector<FigureInfo> read_index_json(const std::string& text) {
       info.files = f.at("files").get<std::vector<std::string>>();
       info.width = f.at("width").get<int>();
       info.height = f.at("height").get<int>();
+      if (const auto a = f.find("animation"); a != f.end()) {  // a figure with [animation]
+        info.animation.file = a->at("file").get<std::string>();
+        info.animation.width = a->at("width").get<int>();
+        info.animation.height = a->at("height").get<int>();
+        info.animation.frames = a->at("frames").get<int>();
+        info.animation.alt = a->at("alt").get<std::string>();
+      }
       for (const Json& a : f.at("axes")) {
         AxesInfo ax;
         ax.pixel_box = numbers_of<4>(a, "pixel_box");
@@ -380,8 +394,13 @@ void figure_html(std::ostringstream& o, const FigureInfo& f) {
   if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << file_url(png) << " 1x, " << file_url(svg) << " 2x\"";
   // The alt text describes the picture for a reader who cannot see it: its title and caption.
   const std::string alt = f.caption.empty() ? title : title + ": " + html_text(detail::plain_text(f.caption));
-  o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << alt << "\"></a></div>\n"
-    << "  <figcaption><b>" << title << "</b>";
+  o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << alt << "\"></a></div>\n";
+  // The figure's animation (an animated WebP of its filmstrips) under the still, with its own alt text.
+  if (!f.animation.file.empty())
+    o << "  <div class=\"frame animation\"><a href=\"" << file_url(f.animation.file) << "\"><img src=\""
+      << file_url(f.animation.file) << "\" width=\"" << f.animation.width << "\" height=\"" << f.animation.height
+      << "\" alt=\"" << html_text(f.animation.alt) << "\"></a></div>\n";
+  o << "  <figcaption><b>" << title << "</b>";
   if (!f.source.empty()) o << "<span class=\"source\">" << html_text(f.source) << "</span>";
   o << " " << markup_html(f.caption) << "\n    <span class=\"files\">";
   for (const auto& file : f.files) {
@@ -414,6 +433,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
   .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, max(440px, 40%)), 1fr)); gap: clamp(10px, 2vw, 24px); }
   figure { margin: 0; background: #fff; border: 1px solid #ddd; padding: clamp(6px, 1.5vw, 12px); min-width: 0; }
   figure img { width: 100%; height: auto; display: block; }
+  figure .animation { margin-top: 8px; }
   figure.natural { grid-column: 1 / -1; }
   figure.natural .frame { overflow-x: auto; }
   figure.natural img { width: auto; max-width: none; image-rendering: pixelated; }

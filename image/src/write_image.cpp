@@ -91,6 +91,8 @@ std::optional<ImageFormat> image_format_of(const std::string& path) {
   return std::nullopt;
 }
 
+std::vector<std::uint8_t> srgb8_values(const Image& im) { return integer_values<std::uint8_t>(im); }
+
 void write_image(const std::string& path, const Image& im, const WriteOptions& options) {
   const auto format = image_format_of(path);
   if (!format)

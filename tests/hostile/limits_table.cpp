@@ -60,6 +60,10 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
        power_of_two((long long)(f::kMaxSweepCrossings)) + " (`Scene::set_max_crossings` changes it)"},
       {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},
       {"`[[axes.inbetween]]` filmstrip frames (`steps` x keyframe intervals + 1)", std::to_string(f::kMaxFilmstripFrames)},
+      {"`[animation]` frames", std::to_string(f::kMaxAnimationFrames)},
+      {"`[animation]` pixels over all frames (frames x width x height), at 1x and after `--scale`", power_of_two((long long)(f::kMaxAnimationPixels))},
+      {"`[animation]` side", std::to_string(f::kMaxAnimationSide) + " px"},
+      {"`[animation]` `delay`, `key_delay`", std::to_string(f::kMinFrameDelayMs) + " to " + std::to_string(f::kMaxFrameDelayMs) + " ms"},
   };
   for (const auto& [quantity, limit] : expected) {
     INFO(quantity);

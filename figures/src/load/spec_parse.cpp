@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -127,6 +128,73 @@ Layout parse_layout(TableReader& r) {
   l.spacing = r.non_negative("spacing", l.spacing);
   r.finish();
   return l;
+}
+
+// [animation], read after the items: its panels name [[axes]] by index and must hold filmstrips
+// of one frame count; frames, canvas and their product are bounded here, before anything is drawn.
+AnimationSpec parse_animation(TableReader& r, const FigureSpec& spec) {
+  AnimationSpec a;
+  a.where = r.where();
+  const std::string delays = "[" + std::to_string(kMinFrameDelayMs) + ", " + std::to_string(kMaxFrameDelayMs) + "]";
+  auto delay = [&](const char* key, int fallback, bool zero) {
+    const double v = r.number(key, fallback);
+    if (!(v == std::floor(v)) || ((v < kMinFrameDelayMs || v > kMaxFrameDelayMs) && !(zero && v == 0)))
+      r.fail(key, "expected whole milliseconds in " + delays);
+    return static_cast<int>(v);
+  };
+  a.delay = delay("delay", a.delay, false);
+  a.key_delay = delay("key_delay", 0, true);
+  a.loops = r.integer("loops", 0, 0, 65535);
+  a.width = r.integer("width", a.width, 1, kMaxAnimationSide);
+  a.height = r.integer("height", a.height, 1, kMaxAnimationSide);
+  if (static_cast<long long>(a.width) * a.height > kMaxCanvasPixels)
+    r.fail("height", "animation canvas of " + std::to_string(static_cast<long long>(a.width) * a.height) +
+                         " pixels is over the limit of 2^28");
+  a.alt = r.string("alt", "");
+  // The [[axes]] in document order, and the frame count of each one's filmstrips.
+  std::vector<const AxesSpec*> axes;
+  for (const Item& item : spec.items)
+    if (const auto* ax = std::get_if<AxesSpec>(&item)) axes.push_back(ax);
+  auto strip_frames = [](const AxesSpec& ax) {
+    std::vector<std::size_t> counts;
+    for (const PlotElement& e : ax.elements)
+      if (const auto* ib = std::get_if<InbetweenElement>(&e); ib && ib->steps > 0)
+        counts.push_back(static_cast<std::size_t>(ib->steps) * (ib->frames.size() - 1) + 1);
+    return counts;
+  };
+  if (r.has("panels")) {
+    for (double v : r.numbers("panels")) {
+      if (!(v == std::floor(v)) || v < 0 || v >= static_cast<double>(axes.size()))
+        r.fail("panels", "expected indices of the spec's [[axes]], 0 to " + std::to_string(static_cast<long long>(axes.size()) - 1));
+      const int i = static_cast<int>(v);
+      if (std::find(a.panels.begin(), a.panels.end(), i) != a.panels.end()) r.fail("panels", "axes[" + std::to_string(i) + "] is named twice");
+      if (strip_frames(*axes[static_cast<std::size_t>(i)]).empty())
+        r.fail("panels", "axes[" + std::to_string(i) + "] holds no filmstrip ([[axes.inbetween]] with steps = N)");
+      a.panels.push_back(i);
+    }
+    if (a.panels.empty()) r.fail("panels", "names no axes");
+    if (a.panels.size() > 16) r.fail("panels", "more than 16 panels side by side");
+  } else {
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      if (!strip_frames(*axes[i]).empty()) a.panels.push_back(static_cast<int>(i));
+    if (a.panels.empty()) r.fail("", "the spec has no filmstrip to animate ([[axes.inbetween]] with steps = N)");
+    if (a.panels.size() > 16) r.fail("", "more than 16 panels with filmstrips: name some in panels = [...]");
+  }
+  std::size_t frames = 0;
+  for (int i : a.panels)
+    for (std::size_t n : strip_frames(*axes[static_cast<std::size_t>(i)])) {
+      if (frames != 0 && n != frames)
+        r.fail(r.has("panels") ? "panels" : "",
+               "its filmstrips differ in frame count (" + std::to_string(frames) + " and " + std::to_string(n) + "): animated together they need one");
+      frames = n;
+    }
+  if (frames > kMaxAnimationFrames)
+    r.fail("", std::to_string(frames) + " frames, over the limit of " + std::to_string(kMaxAnimationFrames));
+  if (static_cast<double>(frames) * a.width * a.height > static_cast<double>(kMaxAnimationPixels))
+    r.fail("height", std::to_string(frames) + " frames of " + std::to_string(a.width) + " x " + std::to_string(a.height) +
+                         " px, over the limit of 2^28 pixels in all");
+  r.finish();
+  return a;
 }
 
 PolylineItem parse_polyline(TableReader& r) {
@@ -329,6 +397,9 @@ FigureSpec read_spec(std::string_view text, const std::string& name, const std::
   collect(r, "text", items, [](TableReader& s, const toml::table&) { return Item{parse_text(s)}; });
   collect(r, "image", items, [&](TableReader& s, const toml::table&) { return Item{parse_image(s, ctx)}; });
   collect(r, "axes", items, [&](TableReader& s, const toml::table&) { return Item{parse_axes(s, ctx)}; });
+  // [animation] names [[axes]] by index: read once they are all in place.
+  const auto animation = r.tables("animation");
+  if (animation.size() > 1) r.fail("animation", "only one [animation] table");
   r.finish();
   std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.line < b.line; });
   for (auto& placed : items) {
@@ -337,6 +408,10 @@ FigureSpec read_spec(std::string_view text, const std::string& name, const std::
   }
 
   place_panels(spec);
+  if (!animation.empty()) {
+    TableReader a(*animation[0], name, "animation");
+    spec.animation = parse_animation(a, spec);
+  }
   return spec;
 }
 

@@ -58,6 +58,15 @@ inline constexpr std::size_t kMaxValueNesting = 16;   // arrays and inline table
 inline constexpr std::size_t kMaxMarks = 100000;      // x_marks, y_marks, curve marks: each a drawn shape
 inline constexpr std::size_t kMaxBezierPoints = 128;  // control points of one [[axes.bezier]] (degree 127)
 inline constexpr std::size_t kMaxFilmstripFrames = 4096;  // frames of one [[axes.inbetween]] filmstrip, each a stroke
+// A spec's [animation] (an animated WebP of its filmstrips): frames, and pixels over all frames
+// (frames x width x height after --scale), each frame rendered and encoded in turn; checked
+// before the first frame is drawn. A frame's delay in milliseconds (browsers show a delay under
+// 20 ms as 100 ms).
+inline constexpr std::size_t kMaxAnimationFrames = 1024;
+inline constexpr std::uint64_t kMaxAnimationPixels = std::uint64_t(1) << 28;
+inline constexpr int kMaxAnimationSide = 16383;  // WebP's largest side
+inline constexpr int kMinFrameDelayMs = 20;
+inline constexpr int kMaxFrameDelayMs = 60000;
 inline constexpr int kMaxTicks = 1000;                // ticks of one axis, each label measured
 // An axis range's span: at least kMinAxisSpan and kMinRelativeAxisSpan of the larger end's
 // magnitude, so that the pixel map and the ticks have distinct numbers to work with.

@@ -45,12 +45,21 @@ struct AxesInfo {
   AxisMap y_map() const;
 };
 
+// The animated WebP written beside a figure with [animation] (docs/figures.md).
+struct AnimationInfo {
+  std::string file;           // empty: none written
+  int width = 0, height = 0;  // output pixels
+  int frames = 0;
+  std::string alt;            // the gallery's alt text
+};
+
 struct FigureInfo {
   std::string name, title, caption;
   std::string source;  // the source figure it reproduces (the spec's `source`), plain text
   int width = 0, height = 0;  // output pixels
   std::vector<AxesInfo> axes;
   std::vector<std::string> files;  // filled in by whoever writes the files
+  AnimationInfo animation;         // likewise
 };
 
 }  // namespace splinefig::figures

@@ -428,6 +428,20 @@ struct CaptionField {
   SpecLocation origin;  // of its [[caption_field]] table, for messages
 };
 
+// [animation]: the figure's filmstrips ([[axes.inbetween]] with steps = N) also written as an
+// animated WebP (docs/figures.md): frame i shows the panels named in `panels` side by side, each
+// filmstrip at t = i / steps alone and unshifted, over its keyframes drawn faintly, the keyframes
+// themselves marked as in the strip.
+struct AnimationSpec {
+  int delay = 200;              // ms an in-between frame is shown
+  int key_delay = 0;            // ms a keyframe is shown; 0: delay
+  int loops = 0;                // plays; 0: for ever
+  int width = 720, height = 400;  // the animation's canvas, pixels at 1x
+  std::vector<int> panels;      // indices of the spec's [[axes]]; empty: every one holding a filmstrip
+  std::string alt;              // the gallery's alt text for it; empty: made from the title
+  SpecLocation where;           // of the [animation] header, for messages
+};
+
 struct FigureSpec {
   std::string name;     // file stem
   std::string path;     // where it was read from
@@ -442,6 +456,7 @@ struct FigureSpec {
   Canvas canvas;
   Layout layout;
   std::vector<Item> items;  // in document order
+  std::optional<AnimationSpec> animation;  // [animation]
   // Of each item's table (parallel to `items`), naming it in errors found while drawing; may be
   // shorter (then messages name the file).
   std::vector<SpecLocation> item_origins;

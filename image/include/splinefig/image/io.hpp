@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace splinefig {
 
@@ -73,6 +74,10 @@ struct WriteOptions {
 //   .exr: float32, linear, associated alpha; sRGB images are decoded first.
 // Throws UnwritableImage (naming the path) for any other extension or any failure.
 void write_image(const std::string& path, const Image& im, const WriteOptions& options = {});
+
+// The 8-bit values write_image stores for `im` in a PNG (straight alpha, sRGB-encoded, clamped,
+// NaN as 0; the image's channels, interleaved): what the animated WebP writer encodes too.
+std::vector<std::uint8_t> srgb8_values(const Image& im);
 
 // The formats write_image writes; the one a path's extension names (any case), if any.
 enum class ImageFormat { png, jpeg, tiff, exr };
