@@ -47,7 +47,7 @@ Image load(const std::string& path, bool linear) {
   try {
     return read_image(path, linear ? ReadMode::linear : ReadMode::as_stored);
   } catch (const UnreadableImage& e) {
-    throw cli::Failure(std::string("cannot read ") + e.what(), 4);
+    throw cli::Failure(std::string("cannot read ") + e.what(), e);
   }
 }
 
@@ -55,7 +55,7 @@ void write(const std::string& path, const Image& im) {
   try {
     write_image(path, im);
   } catch (const UnwritableImage& e) {
-    throw cli::Failure(std::string("cannot write ") + e.what(), 4);
+    throw cli::Failure(std::string("cannot write ") + e.what(), e);
   }
 }
 
@@ -83,7 +83,7 @@ int run(const DiffArgs& args, const CLI::App& app) {
   if (cli::is_stdio(args.mask)) throw cli::Failure("--mask -: stdin is not read for the mask (give a file)");
   for (const auto& [flag, out] : {std::pair{"--diff-image", &args.diff_image}, std::pair{"--triptych", &args.triptych}})
     if (cli::is_stdio(*out)) throw cli::Failure(std::string(flag) + " -: stdout holds the report (give a file)");
-  cli::Scratch scratch(4);
+  cli::Scratch scratch;
   const std::string stdin_path = cli::is_stdio(args.a) || cli::is_stdio(args.b) ? cli::stdin_image(scratch) : "";
   const auto path_of = [&](const std::string& p) { return cli::is_stdio(p) ? stdin_path : p; };
   const auto said = [&](const std::string& m) { return cli::said_as(m, stdin_path, "stdin"); };
@@ -93,7 +93,7 @@ int run(const DiffArgs& args, const CLI::App& app) {
     if (out->empty()) continue;
     for (const std::string* in : {&args.a, &args.b, &args.mask})
       if (!in->empty() && !cli::is_stdio(*in) && same_file(*out, *in))
-        throw cli::Failure("cannot write " + *out + ": it is the input " + *in, 4);
+        throw cli::Failure("cannot write " + *out + ": it is the input " + *in, ErrorKind::unwritable);
   }
   if (!args.diff_image.empty() && !args.triptych.empty() &&
       (args.diff_image == args.triptych || same_file(args.diff_image, args.triptych)))
@@ -105,14 +105,14 @@ int run(const DiffArgs& args, const CLI::App& app) {
     try {
       check_image_header(path_of(*in));
     } catch (const UnreadableImage& e) {
-      throw cli::Failure(said(std::string("cannot read ") + e.what()), 4);
+      throw cli::Failure(said(std::string("cannot read ") + e.what()), e);
     }
   }
   const auto load_input = [&](const std::string& p) {
     try {
       return load(path_of(p), o.linear);
     } catch (const cli::Failure& e) {
-      throw cli::Failure(said(e.what()), e.code);
+      throw cli::Failure(said(e.what()), e);
     }
   };
   const Image a = load_input(args.a);

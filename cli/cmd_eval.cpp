@@ -34,7 +34,7 @@ Points sample_companion(const Options& o, const Curve& c, int grain, int derivat
       return sample_spaced(c, spacing_exponent(*parse_knot_spacing(o.knot_spacing)), grain, derivative);
     cli::check_input_file(o.betas, "--betas");
     std::ifstream in(o.betas);
-    if (!in) throw Failure("--betas: cannot open '" + o.betas + "'");
+    if (!in) throw Failure("--betas: cannot open '" + o.betas + "'", splinefig::ErrorKind::unreadable);
     const Points b = cli::read_points(in, o.betas);
     if (b.dim != 2) throw Failure(o.betas + ": " + std::to_string(b.dim) + " values per line, expected b1,b2");
     std::vector<ShapeParameters> betas;

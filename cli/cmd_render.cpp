@@ -128,14 +128,12 @@ const splinefig::cli::Registration reg{
               fig::write_figure_file(f, path, *format, w, raster);
             } catch (const splinefig::UnwritableFile& e) {
               if (!to_stdout) throw;
-              throw Failure(splinefig::cli::said_as(e.what(), path, "stdout"));
+              throw Failure(splinefig::cli::said_as(e.what(), path, "stdout"), e);
             }
             if (to_stdout) splinefig::cli::file_to_stdout(scratch, path);
           } catch (const std::length_error& e) {  // an item past the rasterizer's work limit
             throw Failure(a->spec + ": " + e.what());
           }
-        } catch (const fig::SpecFileError& e) {
-          throw Failure(e.what());
         } catch (const std::bad_alloc&) {
           // One line naming the spec and what it needed, not a bare "std::bad_alloc".
           throw Failure(spec_name + ": out of memory " +

@@ -148,7 +148,7 @@ int run(const Options& o) {
     reading.say("reading " + o.in);
     src = read_image(in, ReadMode::linear, &format);
   } catch (const UnreadableImage& e) {
-    throw Failure(from_stdin ? cli::said_as(e.what(), in, "stdin") : e.what());
+    throw Failure(from_stdin ? cli::said_as(e.what(), in, "stdin") : e.what(), e);
   }
   const int bits = output_bits(o.bits, ext, format);
   if (size.first == 0) size.first = keep_aspect(size.second, src.height, src.width, "width");
@@ -177,7 +177,7 @@ int run(const Options& o) {
     try {
       write_image(path, jpeg ? over_white(out) : out, *image_format_of("x" + ext), w);
     } catch (const UnwritableImage& e) {
-      throw Failure(to_stdout ? cli::said_as(e.what(), path, "stdout") : e.what());
+      throw Failure(to_stdout ? cli::said_as(e.what(), path, "stdout") : e.what(), e);
     }
     if (to_stdout) cli::file_to_stdout(scratch, path);
   } catch (const std::invalid_argument& e) {

@@ -2,10 +2,12 @@
 // Subcommand registry. Each cmd_*.cpp defines one subcommand and registers it with
 //   static const splinefig::cli::Registration reg{"eval", "Evaluate a spline ...", setup};
 // where setup(CLI::App&) adds the options and returns the function that runs it.
-// The function returns the process exit code; it reports errors by throwing
-// splinefig::cli::Failure (one line, printed as "splinefig NAME: message").
+// The function returns the process exit code of a run that did what was asked (diff: its
+// verdict); it reports errors by throwing (one line, printed as "splinefig NAME: message"), and
+// main.cpp alone turns the error's kind (base/error.hpp) into the exit code.
 #include "reference.hpp"
 
+#include <splinefig/base/error.hpp>
 #include <splinefig/base/limits.hpp>
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/points_csv.hpp>
@@ -44,10 +46,11 @@ struct Registration {
   }
 };
 
-// A user-facing error: one line naming what is wrong and where; exit code `code`.
-struct Failure : std::runtime_error {
-  int code;
-  explicit Failure(const std::string& what, int code = 2) : std::runtime_error(what), code(code) {}
+// A user-facing error: one line naming what is wrong and where, of kind `kind` (a bad flag or
+// input unless said), or of the kind of the error `cause` it says in other words.
+struct Failure : std::runtime_error, Error {
+  explicit Failure(const std::string& what, ErrorKind kind = ErrorKind::bad_input) : std::runtime_error(what), Error(kind) {}
+  Failure(const std::string& what, const std::exception& cause) : Failure(what, error_kind(cause)) {}
 };
 
 // The basis specs every command that takes one accepts (spline/basis.hpp), for --help.

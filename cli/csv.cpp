@@ -74,10 +74,10 @@ std::vector<double> parse_vector(std::string_view text, std::string_view what) {
 Points read_points(std::istream& in, std::string_view source, const CsvOptions& options) {
   try {
     Points pts = read_csv_points(in, source, options);
-    if (&in == &std::cin && std::ferror(stdin)) throw Failure("cannot read " + std::string(source));
+    if (&in == &std::cin && std::ferror(stdin)) throw Failure("cannot read " + std::string(source), ErrorKind::unreadable);
     return pts;
   } catch (const CsvError& e) {
-    throw Failure(e.what());
+    throw Failure(e.what(), e);
   }
 }
 
@@ -88,7 +88,7 @@ Points read_input(const std::string& path, const CsvOptions& options) {
   }
   check_input_file(path);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Failure(path + ": cannot open it (" + std::strerror(errno) + ")");
+  if (!in) throw Failure(path + ": cannot open it (" + std::strerror(errno) + ")", ErrorKind::unreadable);
   return read_points(in, path, options);
 }
 
@@ -178,7 +178,7 @@ std::size_t first_non_finite(std::span<const double> v) {
 
 void write_stdout(std::string_view text) {
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Failure(std::string("cannot write to standard output (") + std::strerror(errno ? errno : EIO) + ")", 2);
+    throw Failure(std::string("cannot write to standard output (") + std::strerror(errno ? errno : EIO) + ")", ErrorKind::unwritable);
 }
 
 }  // namespace splinefig::cli

@@ -31,15 +31,26 @@ struct Reference {
   std::string text;
 };
 
+// The one place an error becomes an exit code (docs/conventions.md): 2 for every error of every
+// command, but `diff` keeps idiff's 4 for a file or stream it cannot read or write. `command` is
+// empty for an error before the command (a bad command name or flag of splinefig's own).
+int exit_code(const std::string& command, splinefig::ErrorKind kind) {
+  using splinefig::ErrorKind;
+  if (command == "diff" && (kind == ErrorKind::unreadable || kind == ErrorKind::unwritable)) return 4;
+  return 2;
+}
+
 // `code`, once everything written to standard output has reached it; else one line on stderr
-// and `failed` (a full disk, a closed pipe or descriptor: `diff >&-` must not look like a match).
-int flushed(int code, const std::string& who, int failed = 2) {
+// and the exit code of an unwritable output (a full disk, a closed pipe or descriptor: `diff >&-`
+// must not look like a match).
+int flushed(int code, const std::string& command = "") {
   std::cout.flush();
   const bool ok = !std::cout.fail() && std::fflush(stdout) == 0 && !std::ferror(stdout);
   if (ok) return code;
   const int err = errno;
-  std::fprintf(stderr, "%s: cannot write to standard output (%s)\n", who.c_str(), std::strerror(err ? err : EIO));
-  return failed;
+  std::fprintf(stderr, "%s: cannot write to standard output (%s)\n", (command.empty() ? "splinefig" : "splinefig " + command).c_str(),
+               std::strerror(err ? err : EIO));
+  return exit_code(command, splinefig::ErrorKind::unwritable);
 }
 
 }  // namespace
@@ -83,9 +94,10 @@ int main(int argc, char** argv) {
       ->type_name("SHELL")
       ->group("")
       ->trigger_on_parse();
+  // A mistake on the command line: a bad_input error of splinefig itself or of its command.
   const auto fail = [](const std::string& who, const std::string& msg) {
     std::cerr << who << ": " << msg << "\n";
-    return 2;
+    return exit_code(who == "splinefig" ? "" : who.substr(who.find(' ') + 1), splinefig::ErrorKind::bad_input);
   };
 
   // What comes before the command: the command itself, or splinefig's own --help and --version.
@@ -125,13 +137,13 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const Reference& r) {
     std::cout << r.text;
-    return flushed(0, "splinefig");
+    return flushed(0);
   } catch (const CLI::CallForHelp& e) {
-    return flushed(app.exit(e), "splinefig");
+    return flushed(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return flushed(app.exit(e), "splinefig");
+    return flushed(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return flushed(app.exit(e), "splinefig");
+    return flushed(app.exit(e));
   } catch (const CLI::ParseError& e) {
     const auto parsed = app.get_subcommands();
     if (parsed.empty()) {
@@ -149,13 +161,10 @@ int main(int argc, char** argv) {
 
   for (CLI::App* sub : app.get_subcommands()) {
     try {
-      return flushed(runners.at(sub)(), "splinefig " + names[sub], names[sub] == "diff" ? 4 : 2);
-    } catch (const Failure& e) {
-      std::cerr << "splinefig " << names[sub] << ": " << printable(e.what()) << "\n";
-      return e.code;
+      return flushed(runners.at(sub)(), names[sub]);
     } catch (const std::exception& e) {
       std::cerr << "splinefig " << names[sub] << ": " << printable(e.what()) << "\n";
-      return 2;
+      return exit_code(names[sub], splinefig::error_kind(e));
     }
   }
   return 2;

@@ -21,12 +21,10 @@ namespace splinefig::cli {
 inline bool is_stdio(const std::string& path) { return path == "-"; }
 
 // A directory of its own under TMPDIR (or /tmp), removed with everything in it when it goes.
-// `code` is the exit code of a failure to hold stdin or stdout in it: 2, as every command exits
-// for an input it cannot read, but 4 for diff (idiff's code for a file it could not read).
+// A failure to hold stdin or stdout in it is an unwritable error (exit 2, diff's 4).
 class Scratch {
  public:
-  explicit Scratch(int code = 2) : code_(code) {}
-  int code() const { return code_; }
+  Scratch() = default;
   Scratch(const Scratch&) = delete;
   Scratch& operator=(const Scratch&) = delete;
   ~Scratch() { remove(); }
@@ -43,30 +41,29 @@ class Scratch {
       std::string templ = std::string(t && *t ? t : "/tmp") + "/splinefig-XXXXXX";
       if (!::mkdtemp(templ.data()))
         throw Failure("cannot make a scratch directory in " + templ.substr(0, templ.size() - 17) + " (" +
-                          std::strerror(errno) + ")", code_);
+                          std::strerror(errno) + ")", ErrorKind::unwritable);
       dir_ = templ;
     }
     return (dir_ / name).string();
   }
 
  private:
-  int code_;
   std::filesystem::path dir_;
 };
 
 // All of stdin as bytes, at most `limit` of them (a larger input is refused, so that /dev/zero
-// cannot fill the memory); `what` names the input in errors ("the spec", "the image"), which exit
-// with `code`.
-inline std::string read_stdin_bytes(const std::string& what, std::size_t limit, int code = 2) {
+// cannot fill the memory); `what` names the input in errors ("the spec", "the image"), which are
+// unreadable errors (exit 2, diff's 4).
+inline std::string read_stdin_bytes(const std::string& what, std::size_t limit) {
   std::string bytes;
   char buf[1 << 16];
   std::size_t n;
   while ((n = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
     bytes.append(buf, n);
     if (bytes.size() > limit)
-      throw Failure("-: " + what + " on stdin is over " + std::to_string(limit >> 20) + " MiB", code);
+      throw Failure("-: " + what + " on stdin is over " + std::to_string(limit >> 20) + " MiB", ErrorKind::unreadable);
   }
-  if (std::ferror(stdin)) throw Failure(std::string("-: cannot read stdin (") + std::strerror(errno ? errno : EIO) + ")", code);
+  if (std::ferror(stdin)) throw Failure(std::string("-: cannot read stdin (") + std::strerror(errno ? errno : EIO) + ")", ErrorKind::unreadable);
   return bytes;
 }
 
@@ -79,17 +76,17 @@ inline const char* image_extension_of(std::string_view b) {
   return "";
 }
 
-// The image on stdin saved as a file of `scratch` named for its format, for read_image; a
-// failure exits with the scratch directory's code.
+// The image on stdin saved as a file of `scratch` named for its format, for read_image; stdin
+// that holds no image is an unreadable error.
 inline std::string stdin_image(Scratch& scratch) {
-  const std::string bytes = read_stdin_bytes("the image", std::size_t(1) << 31, scratch.code());
-  if (bytes.empty()) throw Failure("-: stdin is empty (an image was expected)", scratch.code());
+  const std::string bytes = read_stdin_bytes("the image", std::size_t(1) << 31);
+  if (bytes.empty()) throw Failure("-: stdin is empty (an image was expected)", ErrorKind::unreadable);
   const char* ext = image_extension_of(bytes);
-  if (!*ext) throw Failure("-: stdin is not a PNG, EXR, JPEG or TIFF image", scratch.code());
+  if (!*ext) throw Failure("-: stdin is not a PNG, EXR, JPEG or TIFF image", ErrorKind::unreadable);
   const std::string path = scratch.file(std::string("stdin") + ext);
   std::ofstream f(path, std::ios::binary);
   if (!f.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) || !f.flush())
-    throw Failure("cannot save stdin in " + path + " (" + std::strerror(errno ? errno : EIO) + ")", scratch.code());
+    throw Failure("cannot save stdin in " + path + " (" + std::strerror(errno ? errno : EIO) + ")", ErrorKind::unwritable);
   return path;
 }
 
@@ -107,7 +104,7 @@ inline void file_to_stdout(Scratch& scratch, const std::string& path) {
   {
     std::ifstream f(path, std::ios::binary);
     bytes.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
-    if (f.bad() || !f.is_open()) throw Failure("cannot read back " + path, scratch.code());
+    if (f.bad() || !f.is_open()) throw Failure("cannot read back " + path, ErrorKind::unwritable);
   }
   scratch.remove();
   write_stdout(bytes);

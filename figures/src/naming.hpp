@@ -12,8 +12,8 @@
 namespace splinefig::figures::detail {
 
 // An error about one key of the table being drawn (e.g. an axes table's x_range).
-struct KeyError : std::invalid_argument {
-  KeyError(std::string k, const std::string& what) : std::invalid_argument(what), key(std::move(k)) {}
+struct KeyError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  KeyError(std::string k, const std::string& what) : ErrorOf(what), key(std::move(k)) {}
   std::string key;
 };
 

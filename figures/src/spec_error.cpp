@@ -16,7 +16,7 @@ std::string SpecLocation::str() const {
   return s;
 }
 
-SpecFileError::SpecFileError(const std::string& message) : std::runtime_error([&] {
+SpecFileError::SpecFileError(const std::string& message) : ErrorOf([&] {
   static constexpr char hex[] = "0123456789abcdef";
   std::string line;
   line.reserve(message.size());

@@ -87,8 +87,8 @@ double tick_pixel(const AxisMap& m, double value);
 void data_bounds(const PreparedAxes& ax, std::array<double, 2>& xb, std::array<double, 2>& yb, bool& has_x, bool& has_y);
 
 // The layout's refusal: the canvas leaves too small a plot box for the panel's texts.
-struct LayoutRefused : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct LayoutRefused : ErrorOf<std::runtime_error, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
 };
 
 // Lays the panel out inside `cell` on a canvas of `canvas_w` x `canvas_h` layout units: every

@@ -6,6 +6,7 @@
 // that map data coordinates to pixels and hold plot elements (spline curves, kernels,
 // data series, control polygons, fills, labels, annotations). Everything here is plain
 // data; load_spec() checks every value so that drawing can assume valid input.
+#include <splinefig/base/error.hpp>
 #include <splinefig/base/limits.hpp>
 #include <splinefig/renderer/renderer.hpp>
 #include <splinefig/resample/resample.hpp>
@@ -43,7 +44,7 @@ struct SpecLocation {
 // A bad spec: the message is one line, "FILE:LINE: KEY: what is wrong". Whatever a message
 // repeats from the spec (a value, a key, a label), a control character in it (a newline, an
 // ESC) is written as \xNN, so that no message spans lines or drives a terminal; UTF-8 stays.
-struct SpecFileError : std::runtime_error {
+struct SpecFileError : ErrorOf<std::runtime_error, ErrorKind::bad_input> {
   explicit SpecFileError(const std::string& message);
   explicit SpecFileError(const char* message) : SpecFileError(std::string(message)) {}
   // "AT: message".

@@ -12,6 +12,8 @@
 // temporary files of every writer thread and then take their previous action (the handler is
 // installed at the first write, and not at all for a signal whose action is SIG_IGN, so an
 // ignored signal stays ignored).
+#include <splinefig/base/error.hpp>
+
 #include <cstddef>
 #include <span>
 #include <stdexcept>
@@ -20,8 +22,8 @@
 namespace splinefig {
 
 // A file that cannot be written; what() is one line naming the file and the reason.
-struct UnwritableFile : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct UnwritableFile : ErrorOf<std::runtime_error, ErrorKind::unwritable> {
+  using ErrorOf::ErrorOf;
 };
 
 void write_file_atomically(const std::string& path, std::span<const unsigned char> bytes);

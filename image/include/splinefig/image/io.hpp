@@ -21,8 +21,8 @@
 namespace splinefig {
 
 // A file that cannot be read as an image. what() is one line naming the file and the reason.
-struct UnreadableImage : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct UnreadableImage : ErrorOf<std::runtime_error, ErrorKind::unreadable> {
+  using ErrorOf::ErrorOf;
 };
 // A file that cannot be written. what() is one line naming the file and the reason.
 struct UnwritableImage : UnwritableFile {

@@ -8,6 +8,7 @@
 // Families: cardinal C_a (Catmull-Rom = C_0.5), B-spline B, Duff's tensioned B_a,
 // Barsky's Beta-spline B_{b1,b2}, the uniform B-spline of any degree (seed 002 §4.16.10), and
 // Mitchell and Netravali's (1988) cubic family M(B,C).
+#include <splinefig/base/error.hpp>
 #include <splinefig/kernel/kernel.hpp>
 
 #include <stdexcept>
@@ -29,8 +30,8 @@ struct Basis {
 };
 
 // An invalid basis spec: the message names the name, key or value and why.
-struct SpecError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
+struct SpecError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
 };
 
 // The memo's matrices, exactly as printed.

@@ -32,8 +32,8 @@ Ends parse_ends(std::string_view s);
 const char* to_string(Ends e);
 
 // Too few knots (or none, or mixed dimensions) for the curve asked for.
-struct CurveError : std::invalid_argument {
-  using std::invalid_argument::invalid_argument;
+struct CurveError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
 };
 
 struct Curve {

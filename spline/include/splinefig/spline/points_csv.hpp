@@ -12,6 +12,7 @@
 // does not parse is "not a CSV file", quoting nothing of it: no line of a file that is not CSV
 // (a points_file = "/etc/shadow") reaches a message. A source named "stdin" is text the user
 // typed or piped, quoted from its first line on.
+#include <splinefig/base/error.hpp>
 #include <splinefig/spline/points.hpp>
 
 #include <cstddef>
@@ -23,9 +24,9 @@
 
 namespace splinefig {
 
-struct CsvError : std::runtime_error {
+struct CsvError : ErrorOf<std::runtime_error, ErrorKind::bad_input> {
   std::size_t line;  // 1-based line of the source, 0 when the error is not about one line
-  CsvError(const std::string& what, std::size_t line) : std::runtime_error(what), line(line) {}
+  CsvError(const std::string& what, std::size_t line) : ErrorOf(what), line(line) {}
 };
 
 struct CsvOptions {
