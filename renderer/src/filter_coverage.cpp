@@ -160,6 +160,7 @@ void render_filtered(const Geometry& g, const Prepared& p, const FilterGrid& gri
   for (int r = cr0; r <= cr1; ++r) {
     MomentRow row{fs, D, qmin, qcount, static_cast<double>(r), qcount, -1, gx, gw};
     sweep.strip(static_cast<double>(r), static_cast<double>(r + 1), row);
+    if (sweep.over()) return;  // stopped at the work limit: the item is refused
     if (row.cmax < row.cmin) continue;
     // Moments per cell = own terms + running full-width cover from the cells to the left.
     std::fill(run.begin(), run.end(), 0.0);

@@ -5,6 +5,8 @@
 #include "scene_item.hpp"
 #include "sweep.hpp"
 
+#include <cstdint>
+
 namespace splinefig::render::detail {
 
 struct Prepared {
@@ -12,6 +14,7 @@ struct Prepared {
   const Scene::Item::Raster* raster = nullptr;  // images only
   Paint paint;         // the item's colour, premultiplied in the canvas's blend space
   int row0 = 0, row1 = 0;  // canvas rows the item can touch, [row0, row1)
+  std::uint32_t work_slot = 0;  // the rasterizer's counter of this item's sweep work (several threads)
 };
 
 // `clip` is the region whose geometry matters (the canvas grown by the filter's support), in

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -36,6 +38,7 @@ void render_box(const Geometry& g, const Prepared& p, Image& img, int r0, int r1
     const int b1 = std::min(b0 + kBandRows, img.height);
     band.begin(b0, b1 - b0);
     const bool more = sweep.strip(static_cast<double>(b0), static_cast<double>(b1), band);
+    if (sweep.over()) return;  // stopped at the work limit: the item is refused
     for (int y = b0; y < b1; ++y) {
       BoxRow& row = band.row(y);
       if (row.cmax < row.cmin) continue;
@@ -95,6 +98,23 @@ double excess_crossings(const Geometry& g, const Prepared& p, double limit) {
   return found >= limit ? found : 0;
 }
 
+// The work limit as the sweep's budget in units (StripSweep::work()).
+std::uint64_t work_budget(double limit) {
+  return limit >= 0x1p63 ? ~std::uint64_t{0} : static_cast<std::uint64_t>(limit);
+}
+
+// An item whose sweep went past the limit although the bound before it did not reach it: its
+// chains cross mostly where they begin or end (the bound counts only chains through a whole
+// band), as at the turns of a dense zigzag.
+[[noreturn]] void refuse_sweep(const Scene::Item& item, std::size_t index, double limit) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "item %zu (%s): its exact union was stopped at the work limit of the sweep, %.3g events "
+                "(crossings and turns of its outline, about 0.2 to 2 us each)",
+                index + 1, kind_name(item.kind), limit);
+  throw std::length_error(buf);
+}
+
 [[noreturn]] void refuse_work(const Scene::Item& item, std::size_t index, double crossings, double limit) {
   char buf[320];
   std::snprintf(buf, sizeof buf,
@@ -124,6 +144,7 @@ Image rasterize(const Scene& scene, int threads) {
   };
 
   const bool box = exact_area(scene.filter_);
+  const std::uint64_t budget = work_budget(scene.max_crossings_);
   FilterGrid grid = box ? FilterGrid{} : make_filter_grid(scene.filter_, W, H);
   Box clip = box ? Box{0, 0, static_cast<double>(W), static_cast<double>(H)} : grid.clip;
   Vec2 shift = box ? Vec2{0, 0} : Vec2{grid.delta, grid.delta};
@@ -163,12 +184,20 @@ Image rasterize(const Scene& scene, int threads) {
       if (const double n = excess_crossings(geom, p, scene.max_crossings_)) refuse_work(items[i], i, n, scene.max_crossings_);
       if (p.raster) {
         composite_raster(*p.raster, comp, img, 0, H);
-      } else if (box) {
+        continue;
+      }
+      if (box) {
+        sweep.set_budget(budget);
         render_box(geom, p, img, p.row0, p.row1, band, sweep);
       } else {
-        for (int b = p.row0 / kBandRows; b <= (p.row1 - 1) / kBandRows; ++b)
+        std::uint64_t spent = 0;
+        for (int b = p.row0 / kBandRows; b <= (p.row1 - 1) / kBandRows && !sweep.over(); ++b) {
+          sweep.set_budget(budget - spent);
           render_filtered(geom, p, grid, img, b * kBandRows, std::min(H, (b + 1) * kBandRows), fs, sweep);
+          spent += std::min(sweep.work(), budget - spent);
+        }
       }
+      if (sweep.over()) refuse_sweep(items[i], i, scene.max_crossings_);
     }
     return img;
   }
@@ -200,6 +229,21 @@ Image rasterize(const Scene& scene, int threads) {
     for (std::size_t i = 0; i < items.size(); ++i)
       if (excess[i] > 0) refuse_work(items[i], i, excess[i], scene.max_crossings_);
   }
+  // Each swept item's work over all bands, against the one limit: an item is refused exactly
+  // when its total passes the limit, whichever bands and threads counted it (a band stops once
+  // the total, with its own share, passes it; the totals of items drawn in full do not depend
+  // on the order). The first refused item is the one named: once an item is refused, later
+  // items are skipped, earlier ones still drawn in full, so the lowest index left is the first
+  // item over the limit on any thread count.
+  std::uint32_t slots = 0;
+  for (Prepared& p : prep)
+    if (!p.raster && !p.shape.simple && !p.shape.empty() && p.row1 > p.row0) p.work_slot = slots++;
+  std::vector<std::atomic<std::uint64_t>> spent(slots);
+  std::atomic<std::size_t> first_over{items.size()};
+  auto note_over = [&](std::size_t i) {
+    std::size_t cur = first_over.load();
+    while (i < cur && !first_over.compare_exchange_weak(cur, i)) {}
+  };
   // Which items touch which band, in item order.
   std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
   for (std::uint32_t i = 0; i < prep.size(); ++i) {
@@ -225,13 +269,29 @@ Image rasterize(const Scene& scene, int threads) {
     const int r0 = static_cast<int>(b) * kBandRows, r1 = std::min(H, r0 + kBandRows);
     clear_rows(r0, r1);  // by the band's thread, like everything else in its rows
     for (std::uint32_t i : band_items[b]) {
+      if (i >= first_over.load(std::memory_order_relaxed)) break;
       const Prepared& p = prep[i];
       const Geometry& g = geoms[run_of[i]];
-      if (p.raster) composite_raster(*p.raster, comp, img, r0, r1);
-      else if (box) render_box(g, p, img, r0, r1, s->band, s->sweep);
+      if (p.raster) {
+        composite_raster(*p.raster, comp, img, r0, r1);
+        continue;
+      }
+      std::atomic<std::uint64_t>* total = p.shape.simple ? nullptr : &spent[p.work_slot];
+      const std::uint64_t used = total ? total->load() : 0;
+      if (used > budget) {
+        note_over(i);
+        break;
+      }
+      s->sweep.set_budget(budget - used);
+      if (box) render_box(g, p, img, r0, r1, s->band, s->sweep);
       else render_filtered(g, p, grid, img, r0, r1, s->fs, s->sweep);
+      if (total && (s->sweep.over() || total->fetch_add(s->sweep.work()) + s->sweep.work() > budget)) {
+        note_over(i);
+        break;
+      }
     }
   });
+  if (first_over.load() < items.size()) refuse_sweep(items[first_over.load()], first_over.load(), scene.max_crossings_);
   return img;
 }
 

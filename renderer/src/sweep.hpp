@@ -80,6 +80,7 @@ class StripSweep {
     active_.clear();
     cursor_.clear();
     first_end_ = INFINITY;
+    work_ = 0;
     mask_ = s.rule == FillRule::EvenOdd ? 1 : ~0;
     clip_mask_ = s.clip_rule == FillRule::EvenOdd ? 1 : ~0;
   }
@@ -87,6 +88,16 @@ class StripSweep {
   // Strips must come in increasing y order. Returns false once nothing is left below.
   template <class Sink>
   bool strip(double y0, double y1, Sink& sink);
+
+  // The sweep's work since reset(): one unit per event (a crossing, a turn at a vertex, a span
+  // starting or ending), per span placed in a cluster's order and per step of re-walking or
+  // re-indexing that order. Once it passes the budget the sweep stops where it is (strip()
+  // returns false and over() is true): the strips' output is then incomplete, and the caller
+  // refuses the item. The bound makes every sweep finish, whatever the estimate made before
+  // it saw (work_estimate.hpp bounds only crossings of chains through whole bands).
+  void set_budget(std::uint64_t units) { budget_ = units; }
+  std::uint64_t work() const { return work_; }
+  bool over() const { return work_ > budget_; }
 
  private:
   struct Span {
@@ -182,7 +193,13 @@ class StripSweep {
     std::uint32_t key, stamp;
     std::uint32_t type() const { return key >> 30; }
     std::uint32_t node() const { return key & ((1u << 30) - 1); }
-    bool operator>(const Event& o) const { return y > o.y || (y == o.y && type() > o.type()); }
+    // A total order (height, kind, node, stamp): which event comes first never depends on the
+    // heap's layout, so dropping stale events (purge_events) changes nothing drawn.
+    bool operator>(const Event& o) const {
+      if (y != o.y) return y > o.y;
+      if (key != o.key) return key > o.key;  // the kind is in the top bits: vertices first
+      return stamp > o.stamp;
+    }
   };
   static constexpr std::uint32_t kNone = ~std::uint32_t{0};
   std::vector<Node> nodes_;
@@ -191,8 +208,10 @@ class StripSweep {
   std::vector<Event> heap_;                                // vertices and crossings
   std::vector<std::pair<double, std::uint32_t>> starts_;  // spans starting inside the strip, by y
   std::vector<std::pair<double, std::uint32_t>> ends_;    // spans ending inside the strip, by y
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> adds_;  // spans starting at one height: (gap, node)
   std::size_t ic0_ = 0;              // the cluster's first index in byx_
   int left_ = 0;                     // the winding left of the cluster at the current height
+  std::uint64_t work_ = 0, budget_ = ~std::uint64_t{0};  // see work()
   int mask_ = ~0, clip_mask_ = ~0;   // the fill rules as masks: nonzero ~0, even-odd 1
 };
 
@@ -311,6 +330,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
   }
   sort_small(starts_.begin(), starts_.end(), KeyThenIndex{});
   sort_small(ends_.begin(), ends_.end(), KeyThenIndex{});
+  work_ += n;
   // The order at the strip's top: by x, spans leaving one point by slope.
   std::sort(ord_.begin(), ord_.end(), [&](std::uint32_t a, std::uint32_t b) {
     const Node &A = nodes_[a], &B = nodes_[b];
@@ -328,6 +348,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
   std::size_t step = 0, ie = 0, is = 0;
   const auto greater = std::greater<>{};
   for (;;) {
+    if (work_ > budget_) return;
     const double ys = step < steps_.size() ? steps_[step].y : INFINITY;
     const double ye = ie < ends_.size() ? ends_[ie].first : INFINITY;
     const double yt = is < starts_.size() ? starts_[is].first : INFINITY;
@@ -340,43 +361,90 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
       continue;
     }
     if (ye == y || yt == y) {
-      // Every span ending, then every span starting at this height, then one re-walk of the
-      // windings over the stretch they touched [lo, hi] and on until the windings agree with
-      // the old ones again.
+      // Every span ending, then every span starting at this height, each kind in one pass over
+      // the order (a height where thousands of chains end, the turns of a dense zigzag, costs
+      // one pass, not one per chain); then one re-walk of the windings over the stretch they
+      // touched [lo, hi] and on until the windings agree with the old ones again.
       std::size_t lo = ord_.size(), hi = 0;
-      for (; ie < ends_.size() && ends_[ie].first == y; ++ie) {
-        const std::uint32_t id = ends_[ie].second;
-        Node& N = nodes_[id];
-        const std::size_t p = pos_[id];
-        if (N.sign != 0) emit(N.open_k, N.chain, N.open_y, y, N.sign, sink);
-        ord_.erase(ord_.begin() + static_cast<std::ptrdiff_t>(p));
-        for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
-        pos_[id] = kNone;
-        lo = std::min(lo, p);
-        if (p < hi) --hi;
-        hi = std::max(hi, p);
+      if (ye == y) {
+        std::size_t first = ord_.size();
+        for (; ie < ends_.size() && ends_[ie].first == y; ++ie) {
+          const std::uint32_t id = ends_[ie].second;
+          Node& N = nodes_[id];
+          if (N.sign != 0) emit(N.open_k, N.chain, N.open_y, y, N.sign, sink);
+          first = std::min<std::size_t>(first, pos_[id]);
+          pos_[id] = kNone;
+          ++work_;
+        }
+        // The order without them; a removed span's right neighbour is where the windings change.
+        std::size_t o = first;
+        for (std::size_t j = first; j < ord_.size(); ++j) {
+          const std::uint32_t id = ord_[j];
+          if (pos_[id] == kNone) {
+            lo = std::min(lo, o);
+            hi = std::max(hi, o);
+            continue;
+          }
+          ord_[o] = id;
+          pos_[id] = static_cast<std::uint32_t>(o++);
+        }
+        work_ += ord_.size() - first;
+        ord_.resize(o);
       }
-      for (; is < starts_.size() && starts_[is].first == y; ++is) {
-        const std::uint32_t id = starts_[is].second;
-        Node& N = nodes_[id];
-        const double x = N.x(y);
-        const auto at = std::upper_bound(ord_.begin(), ord_.end(), id, [&](std::uint32_t a, std::uint32_t b) {
-          const Node &A = nodes_[a], &B = nodes_[b];
-          const double xb = B.x(y);
-          if (x != xb) return x < xb;
+      if (yt == y) {
+        // Each new span's place: the gap of the current order it goes into (by x, then slope),
+        // new spans sharing a gap in that same order; then one merge.
+        adds_.clear();
+        for (; is < starts_.size() && starts_[is].first == y; ++is) {
+          const std::uint32_t id = starts_[is].second;
+          Node& N = nodes_[id];
+          const double x = N.x(y);
+          const auto at = std::upper_bound(ord_.begin(), ord_.end(), id, [&](std::uint32_t a, std::uint32_t b) {
+            const Node &A = nodes_[a], &B = nodes_[b];
+            const double xb = B.x(y);
+            if (x != xb) return x < xb;
+            if (A.slope != B.slope) return A.slope < B.slope;
+            return a < b;
+          });
+          adds_.push_back({static_cast<std::uint32_t>(at - ord_.begin()), id});
+          N.sign = 0;
+          N.open_y = y;
+          N.open_k = N.k;
+          if (N.ny < N.tb) push_event(N.ny, kVertex, id);
+          ++work_;
+        }
+        std::sort(adds_.begin(), adds_.end(), [&](const std::pair<std::uint32_t, std::uint32_t>& a,
+                                                  const std::pair<std::uint32_t, std::uint32_t>& b) {
+          if (a.first != b.first) return a.first < b.first;
+          const Node &A = nodes_[a.second], &B = nodes_[b.second];
+          const double xa = A.x(y), xb = B.x(y);
+          if (xa != xb) return xa < xb;
           if (A.slope != B.slope) return A.slope < B.slope;
-          return a < b;
+          return a.second < b.second;
         });
-        const std::size_t p = static_cast<std::size_t>(at - ord_.begin());
-        ord_.insert(at, id);
-        for (std::size_t j = p; j < ord_.size(); ++j) pos_[ord_[j]] = static_cast<std::uint32_t>(j);
-        N.sign = 0;
-        N.open_y = y;
-        N.open_k = N.k;
-        if (N.ny < N.tb) push_event(N.ny, kVertex, id);
-        if (p <= hi && lo <= hi) ++hi;
-        lo = std::min(lo, p);
-        hi = std::max(hi, p);
+        // A removal's gap moves right by the spans inserted at or before it.
+        if (lo <= hi) {
+          std::size_t before_lo = 0, before_hi = 0;
+          for (const auto& a : adds_) {
+            before_lo += a.first <= lo;
+            before_hi += a.first <= hi;
+          }
+          lo += before_lo;
+          hi += before_hi;
+        }
+        const std::size_t from = adds_.front().first, old_n = ord_.size();
+        ord_.resize(old_n + adds_.size());
+        // Merge from the back: old entries move right by the new ones placed before them.
+        std::size_t j = old_n, k = adds_.size(), out = ord_.size();
+        while (k > 0) {
+          const std::size_t gap = adds_[k - 1].first;
+          while (j > gap) ord_[--out] = ord_[--j];
+          ord_[--out] = adds_[--k].second;
+        }
+        for (std::size_t q = from; q < ord_.size(); ++q) pos_[ord_[q]] = static_cast<std::uint32_t>(q);
+        work_ += ord_.size() - from;
+        lo = std::min(lo, from);
+        for (const auto& a : adds_) hi = std::max<std::size_t>(hi, pos_[a.second]);
       }
       if (lo > hi) continue;
       rewalk(lo, hi, y, sink);
@@ -384,6 +452,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
       continue;
     }
     const Event e = heap_.front();
+    ++work_;
     std::pop_heap(heap_.begin(), heap_.end(), greater);
     heap_.pop_back();
     if (e.type() == kCross) {
@@ -421,6 +490,20 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
 }
 
 inline void StripSweep::push_event(double y, std::uint32_t type, std::uint32_t node, std::uint32_t stamp) {
+  // A crossing event goes stale whenever its pair changes, and stays in the heap until its
+  // height comes: where many pairs change often (thousands of joins overlapping at the turns of
+  // a dense zigzag) stale events would outnumber live ones without bound. The live ones are at
+  // most one turn and one crossing per span, so the heap is swept of stale ones whenever it
+  // grows past four per span: amortised O(1) per push, and the heap stays O(spans).
+  if (heap_.size() >= 4 * nodes_.size() + 64) {
+    std::erase_if(heap_, [&](const Event& e) {
+      if (e.type() != kCross) return false;
+      const std::uint32_t a = e.node();
+      return pos_[a] == kNone || nodes_[a].stamp != e.stamp;
+    });
+    std::make_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    work_ += nodes_.size();
+  }
   heap_.push_back({y, type << 30 | node, stamp});
   std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
 }
@@ -473,11 +556,13 @@ void StripSweep::rewalk(std::size_t lo, std::size_t hi, double y, Sink& sink) {
     N.w = nw;
     set_status(id, w, y, sink);
     w = nw;
+    ++work_;
   }
 }
 
 template <class Sink>
 bool StripSweep::strip(double y0, double y1, Sink& sink) {
+  if (over()) return false;
   if (!update_active(y0, y1)) return next_ < s_->chain_end;
   if (s_->simple) {
     emit_simple(y0, y1, sink);
@@ -492,11 +577,12 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
       if (!update_active(y, std::min(y + 1, y1))) continue;
       build_spans(y, std::min(y + 1, y1));
       if (!spans_.empty()) sweep_spans(y, std::min(y + 1, y1), sink);
+      if (over()) return false;
     }
     return true;
   }
   sweep_spans(y0, y1, sink);
-  return true;
+  return !over();
 }
 
 // The spans of the strip, cluster by cluster from the left.
@@ -520,6 +606,7 @@ void StripSweep::sweep_spans(double y0, double y1, Sink& sink) {
       continue;
     }
     sweep_cluster(c0, c1, y0, y1, sink);
+    if (over()) return;
     add_steps(c0, c1, y0, y1);
     c0 = c1;
   }

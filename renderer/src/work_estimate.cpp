@@ -1,6 +1,7 @@
 #include "work_estimate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -42,8 +43,16 @@ double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, 
     std::size_t chain, k;  // k: the edge holding the band's top
   };
   std::vector<Active> active;
-  std::vector<std::pair<double, double>> spans;  // (x at the band's top, x at its bottom)
+  std::vector<std::pair<double, double>> spans, whole;  // (x at a stretch's top, x at its bottom)
   std::vector<double> bottoms, tmp;
+  // The pairs of spans whose order at the bottom is the reverse of their order at the top.
+  auto inversions = [&](std::vector<std::pair<double, double>>& sp) {
+    if (sp.size() < 2) return 0.0;
+    std::sort(sp.begin(), sp.end());
+    bottoms.resize(sp.size());
+    for (std::size_t i = 0; i < sp.size(); ++i) bottoms[i] = sp[i].second;
+    return count_inversions(bottoms, tmp);
+  };
   // x of chain c at height y, its edges searched from k on by bisection (y ascending: a chain of
   // a million vertices through 64 bands costs 64 searches, not a walk over its vertices); k is
   // left at the edge holding y.
@@ -69,19 +78,42 @@ double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, 
     active.resize(n);
     for (; next < s.chain_end && ch[next].ymin < bottom; ++next)
       if (ch[next].ymax > top) active.push_back({next, ch[next].first});
+    // Chains through the whole band: a pair in one order at its top and the other at its bottom
+    // crosses inside it.
     spans.clear();
+    double last_start = -INFINITY, first_end = INFINITY;
     for (Active& a : active) {
       const Chain& c = ch[a.chain];
+      if (c.ymin > top && c.ymin < bottom) last_start = std::max(last_start, c.ymin);
+      if (c.ymax < bottom && c.ymax > top) first_end = std::min(first_end, c.ymax);
       if (c.ymin > top || c.ymax < bottom) continue;
       const double xt = x_at(c, a.k, top);
       std::size_t kb = a.k;
       spans.push_back({xt, x_at(c, kb, bottom)});
     }
-    if (spans.size() < 2) continue;
-    std::sort(spans.begin(), spans.end());
-    bottoms.resize(spans.size());
-    for (std::size_t i = 0; i < spans.size(); ++i) bottoms[i] = spans[i].second;
-    count += count_inversions(bottoms, tmp);
+    count += inversions(spans);
+    // Chains that begin inside the band: from the last of their beginnings to the band's bottom
+    // every one of them is there, and the pairs inverted over that stretch that include one of
+    // them (all inverted pairs less those of chains through the whole band) cross in it, where
+    // no pair counted above is counted again. Chains that end inside the band likewise, from its
+    // top to the first of their ends. Both stretches are empty for a band without such chains;
+    // they find the crossings of joins that overlap where a dense zigzag turns, which the
+    // whole-band count cannot see.
+    for (int side = 0; side < 2; ++side) {
+      const double from = side == 0 ? last_start : top, to = side == 0 ? bottom : first_end;
+      if (!(from > top || to < bottom) || !(from < to)) continue;
+      spans.clear();
+      whole.clear();
+      for (Active& a : active) {
+        const Chain& c = ch[a.chain];
+        if (c.ymin > from || c.ymax < to) continue;
+        std::size_t ka = a.k, kb = a.k;
+        const std::pair<double, double> sp{x_at(c, ka, from), x_at(c, kb, to)};
+        spans.push_back(sp);
+        if (c.ymin <= top && c.ymax >= bottom) whole.push_back(sp);
+      }
+      count += inversions(spans) - inversions(whole);
+    }
   }
   return count;
 }

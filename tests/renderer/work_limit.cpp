@@ -131,3 +131,111 @@ TEST_CASE("10^5 uniformly random points on 1024^2 are refused at the default lim
   CHECK_THROWS_WITH(render::rasterize(scene, 1), Catch::Contains("item 1 (stroked polyline)") &&
                                                      Catch::Contains("refused past 2.68e+08 crossings"));
 }
+
+namespace {
+
+// A stroke up and down between rows y0 and y1, `n` turns across 490 columns: its outline's
+// chains run from turn to turn, and the neighbouring joins overlap and cross each other.
+std::vector<Vec2> zigzag(int n, double y0, double y1) {
+  std::vector<Vec2> p;
+  for (int i = 0; i < n; ++i) p.push_back({10 + 490.0 * i / n, i % 2 ? y0 : y1});
+  return p;
+}
+
+// The sweep of one item alone, counted by the sweep itself (renderer/src/sweep.hpp: work()).
+std::uint64_t sweep_work(const render::Scene& scene) {
+  render::detail::Geometry g;
+  render::detail::Prepared p;
+  const render::detail::Compositor comp(render::BlendSpace::linear);
+  const int w = scene.width(), h = scene.height();
+  render::detail::prepare_item(scene.items()[0], comp, {0, 0}, {0, 0, double(w), double(h)}, g, p, h);
+  struct Null {
+    void edge(double, double, double, double, double) {}
+  } sink;
+  render::detail::StripSweep sweep;
+  sweep.reset(g, p.shape);
+  for (int y = 0; y < h; y += 16) sweep.strip(y, std::min(y + 16, h), sink);
+  return sweep.work();
+}
+
+}  // namespace
+
+TEST_CASE("the sweep counts at least one unit of work per crossing", "[renderer][work]") {
+  std::mt19937_64 rng(5);
+  for (int n : {50, 200, 600}) {
+    const auto poly = random_points(rng, n, 300);
+    render::Scene scene(300, 300);
+    scene.fill_polygon({poly}, render::FillRule::NonZero, {0, 0, 0, 1});
+    const double exact = brute_force_crossings(poly);
+    INFO(n << " random points: " << exact << " crossings");
+    CHECK(static_cast<double>(sweep_work(scene)) >= exact);
+  }
+}
+
+TEST_CASE("the bound sees the crossings of chains that begin or end inside a band", "[renderer][work]") {
+  // A tall zigzag's chains run from turn to turn, through every band between, and the joins at
+  // its turns overlap their neighbours' (3000 turns, 0.16 px apart, width 1.5). The crossings
+  // there are near the chains' ends, in bands the chains do not run through: the whole-band
+  // count finds 2990 of them, the stretches from the chains' last beginning and first end
+  // 38918. The exact count is between them and the sweep's work (at least one unit each).
+  render::Scene one(512, 512);
+  render::StrokeStyle style;
+  style.width = 1.5;
+  one.stroke_polyline(zigzag(3000, 40, 470), false, style, {0, 0, 0, 1});
+  render::detail::Geometry g;
+  render::detail::Prepared p;
+  const render::detail::Compositor comp(render::BlendSpace::linear);
+  render::detail::prepare_item(one.items()[0], comp, {0, 0}, {0, 0, 512, 512}, g, p, 512);
+  const double bound = render::detail::crossings_lower_bound(g, p.shape, 0, 512, 16, INFINITY);
+  const double work = static_cast<double>(sweep_work(one));
+  INFO("bound " << bound << ", sweep work " << work);
+  CHECK(bound >= 3e4);
+  CHECK(bound <= work);
+}
+
+TEST_CASE("an item whose crossings hide from the bound is stopped at the work limit by the sweep, naming the first such item",
+          "[renderer][work]") {
+  // A zigzag within one band (rows 196 to 204 of the band 192-208): every chain begins and ends
+  // inside it, where the bound sees none of their crossings.
+  const auto zz = zigzag(3000, 196, 204);
+  render::StrokeStyle style;
+  style.width = 1.5;
+  {
+    render::Scene one(512, 512);
+    one.stroke_polyline(zz, false, style, {0, 0, 0, 1});
+    render::detail::Geometry g;
+    render::detail::Prepared p;
+    const render::detail::Compositor comp(render::BlendSpace::linear);
+    render::detail::prepare_item(one.items()[0], comp, {0, 0}, {0, 0, 512, 512}, g, p, 512);
+    const double bound = render::detail::crossings_lower_bound(g, p.shape, 0, 512, 16, INFINITY);
+    const double work = static_cast<double>(sweep_work(one));
+    INFO("bound " << bound << ", sweep work " << work);
+    REQUIRE(bound < 3e4);
+    REQUIRE(work > 1e5);
+  }
+  for (const auto& filter : {splinefig::Kernel::box(), splinefig::Kernel::tent()}) {
+    for (int threads : {1, 2, 3}) {
+      render::Scene scene(512, 512, {1, 1, 1, 1}, filter);
+      scene.fill_circle({10, 10}, 5, {0, 0, 0, 1});
+      scene.stroke_polyline(zz, false, style, {0, 0, 0, 1});
+      scene.stroke_polyline(zz, false, style, {1, 0, 0, 1});
+      scene.set_max_crossings(3e4);
+      try {
+        (void)render::rasterize(scene, threads);
+        FAIL("not stopped on " << threads << " threads");
+      } catch (const std::length_error& e) {
+        const std::string m = e.what();
+        INFO(m);
+        CHECK(m.find("item 2 (stroked polyline): its exact union was stopped at the work limit of the sweep, 3e+04 events") ==
+              0);
+        CHECK(m.find('\n') == std::string::npos);
+      }
+    }
+  }
+  // With the limit above its work, the same zigzag is drawn, the same bytes on any thread count.
+  render::Scene scene(512, 512);
+  scene.stroke_polyline(zz, false, style, {0, 0, 0, 1});
+  scene.set_max_crossings(1e6);
+  const auto one = render::rasterize(scene, 1);
+  CHECK(render::rasterize(scene, 3).pixels == one.pixels);
+}

@@ -164,8 +164,9 @@ class Scene {
   void set_blend_space(BlendSpace space) { blend_ = space; }
   // The work the exact union may take, in crossings of one item's outline with itself on the
   // canvas (kMaxSweepCrossings by default): rasterize refuses an item past it with
-  // std::length_error, from a lower bound on its crossings found before it is swept (infinity:
-  // no limit).
+  // std::length_error, from a lower bound on its crossings found before it is swept, or, where
+  // the bound sees too few, once the sweep's own count of its events passes it (infinity: no
+  // limit).
   double max_crossings() const { return max_crossings_; }
   void set_max_crossings(double crossings);
 
