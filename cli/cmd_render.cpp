@@ -1,13 +1,16 @@
-// `splinefig render SPEC.toml -o OUT.(png|exr|svg|pdf) [--scale S] [--dpi N] [--threads N]`: one
-// figure spec (docs/spec.md) rendered to one file, the format chosen by the extension.
+// `splinefig render SPEC.toml -o OUT.(png|exr|svg|pdf|webp) [--scale S] [--dpi N] [--threads N]`:
+// one figure spec (docs/spec.md) rendered to one file, the format chosen by the extension
+// (.webp: the spec's [animation], an animated WebP).
 #include "command.hpp"
 #include "stdio.hpp"
 
+#include <splinefig/figures/animation.hpp>
 #include <splinefig/figures/batch.hpp>
 #include <splinefig/figures/figure.hpp>
 #include <splinefig/figures/output.hpp>
 #include <splinefig/image/io.hpp>
 #include <splinefig/version.hpp>
+#include <splinefig/base/extension.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -50,7 +53,7 @@ const splinefig::cli::Registration reg{
     "render", "Render one TOML figure spec to a PNG, EXR, SVG or PDF file", [](CLI::App& app) {
       auto a = std::make_shared<RenderArgs>();
       app.add_option("spec", a->spec, "Figure spec (TOML, see docs/spec.md); - reads it from stdin, its relative paths then from the current directory")->type_name("PATH")->required();
-      app.add_option("-o,--output", a->out, "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves); - writes to stdout")
+      app.add_option("-o,--output", a->out, "Output: .png (8-bit sRGB), .exr (float linear), .svg or .pdf (vector, exact curves), .webp (the spec's [animation]); - writes to stdout")
           ->type_name("PATH")->required();
       splinefig::cli::choices(
           app.add_option("--format", a->format, "Output format png, exr, svg or pdf, for -o - (png when not given) or a name without one of those extensions")
@@ -68,7 +71,11 @@ const splinefig::cli::Registration reg{
         // optional read after the checks: GCC 12 at -O2 warns about that).
         bool has_ext = false;
         fig::Format ext = fig::Format::png;
-        if (!to_stdout)
+        // .webp: the spec's [animation] (docs/spec.md), an animated WebP; no --format names it.
+        const bool animation = !to_stdout && splinefig::lower_extension(a->out) == "webp";
+        if (animation && !a->format.empty())
+          throw Failure("--format " + a->format + ": -o " + a->out + " names another format (.webp)");
+        if (!to_stdout && !animation)
           if (const std::optional<fig::Format> f = fig::format_of_path(a->out)) {
             has_ext = true;
             ext = *f;
@@ -83,7 +90,7 @@ const splinefig::cli::Registration reg{
           chosen = *named;
         } else if (has_ext) {
           chosen = ext;
-        } else if (!to_stdout) {
+        } else if (!to_stdout && !animation) {
           throw Failure("-o " + a->out + ": the output must end in .png, .exr, .svg or .pdf (or give --format)");
         }
         const fig::Format* const format = &chosen;
@@ -112,6 +119,13 @@ const splinefig::cli::Registration reg{
             need = buf;
           }
           fig::check_scaled_canvas(spec, a->scale, "--scale");
+          if (animation) {
+            if (!spec.animation)
+              throw Failure("-o " + a->out + ": a .webp output is the spec's [animation], and " + spec_name + " has none");
+            fig::check_animation_size(spec, a->scale);
+            fig::write_animation(spec, a->out, a->scale, threads);
+            return 0;
+          }
           const fig::FigureScene f = fig::figure_scene(spec, a->scale);
           fig::FigureFileOptions w;
           w.scale = a->scale;

@@ -272,3 +272,32 @@ TEST_CASE("[animation]: the limits after --scale are checked before any frame is
   CHECK(!fs::exists(dir / "out" / "big.webp"));
   for (const auto& e : fs::directory_iterator(dir / "out")) CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
 }
+
+TEST_CASE("[animation]: a WebP that cannot be written is named, leaves no temporary file and keeps the PNG") {
+  const fs::path dir = scratch("animation-unwritable");
+  fs::create_directories(dir / "s003-fig15.webp");  // a directory where the file would go
+  const Result r = run(exe() + " figures --only s003-fig15 --out " + dir.string());
+  CHECK(r.code == 2);
+  CHECK(r.out.find("s003-fig15.webp") != std::string::npos);
+  CHECK(fs::is_directory(dir / "s003-fig15.webp"));
+  CHECK(fs::is_empty(dir / "s003-fig15.webp"));
+  CHECK(fs::exists(dir / "s003-fig15.png"));
+  for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".tmp") == std::string::npos);
+}
+
+TEST_CASE("render -o NAME.webp writes the spec's animation, the bytes figures writes, and refuses a spec without one") {
+  const fs::path dir = render_builtin("animation-render", {"s003-fig15"});
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/s003-fig15.toml";
+  Result r = run(exe() + " render " + spec + " -o " + (dir / "alone.webp").string() + " --threads 1");
+  REQUIRE(r.code == 0);
+  CHECK(read_file(dir / "alone.webp") == read_file(dir / "s003-fig15.webp"));
+  const std::string still = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/s003-fig17.toml";
+  r = run(exe() + " render " + still + " -o " + (dir / "none.webp").string());
+  CHECK(r.code == 2);
+  CHECK(r.out.find("a .webp output is the spec's [animation], and " + still + " has none") != std::string::npos);
+  CHECK(!fs::exists(dir / "none.webp"));
+  r = run(exe() + " render " + spec + " -o " + (dir / "x.webp").string() + " --format png");
+  CHECK(r.code == 2);
+  CHECK(r.out.find("names another format (.webp)") != std::string::npos);
+  CHECK(!fs::exists(dir / "x.webp"));
+}

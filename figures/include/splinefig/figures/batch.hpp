@@ -40,8 +40,11 @@ struct BatchResult {
 // (from whichever thread completed the result, with the batch's lock held: keep it short), as
 // soon as the results before it are in. If `done` throws, no further figure is started and the
 // exception is rethrown here once the figures under way have finished.
+// With PNG among the formats, a spec with [animation] also gets NAME.webp (animation.hpp), drawn
+// after its other files, its size checked with the canvas before anything is drawn.
 // Before anything is rendered, throws std::runtime_error (one line) if an output would replace
-// an input: output_over_input of every NAME.<format> and of index.json and index.html.
+// an input: output_over_input of every NAME.<format> (and NAME.webp with PNG) and of index.json
+// and index.html.
 void render_batch(const std::vector<SpecFile>& specs, const BatchOptions& options,
                   const std::function<void(BatchResult&)>& done);
 
