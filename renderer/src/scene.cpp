@@ -161,7 +161,7 @@ void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRul
 void Scene::fill_circle(Vec2 centre, double radius, Color color) {
   check_points({&centre, 1}, "fill_circle", "centre");
   check_finite(radius, "fill_circle", "radius");
-  if (radius < 0) bad("fill_circle: radius " + std::to_string(radius) + " is negative");
+  if (radius < 0) bad("fill_circle: radius " + num(radius) + " is negative");
   check_color(color, "fill_circle");
   Item it;
   it.kind = Item::Kind::Disk;
@@ -174,7 +174,7 @@ void Scene::fill_circle(Vec2 centre, double radius, Color color) {
 void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) {
   check_points({&centre, 1}, "stroke_circle", "centre");
   check_finite(radius, "stroke_circle", "radius");
-  if (radius < 0) bad("stroke_circle: radius " + std::to_string(radius) + " is negative");
+  if (radius < 0) bad("stroke_circle: radius " + num(radius) + " is negative");
   check_style(style, "stroke_circle");
   check_color(color, "stroke_circle");
   Item it;
@@ -189,7 +189,7 @@ void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, 
 void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
   check_points({&centre, 1}, "marker", "centre");
   check_finite(size, "marker", "size");
-  if (size < 0) bad("marker: size " + std::to_string(size) + " is negative");
+  if (size < 0) bad("marker: size " + num(size) + " is negative");
   check_color(fill, "marker");
   Item it;
   it.kind = Item::Kind::Marker;

@@ -111,6 +111,10 @@ TEST_CASE("NaN and infinite input is rejected with std::invalid_argument naming 
   REQUIRE_THROWS_AS(s.fill_polygon({{{0, 0}, {INFINITY, 1}, {1, 1}}}, sr::FillRule::NonZero, {}), std::invalid_argument);
   REQUIRE_THROWS_WITH(s.fill_circle({0, 0}, NAN, {}), Catch::Contains("radius"));
   REQUIRE_THROWS_WITH(s.fill_circle({0, 0}, -1, {}), Catch::Contains("negative"));
+  // Numbers in messages are written as printf's %g writes them, as everywhere else in them.
+  REQUIRE_THROWS_WITH(s.fill_circle({0, 0}, -1.5, {}), "fill_circle: radius -1.5 is negative");
+  REQUIRE_THROWS_WITH(s.stroke_circle({0, 0}, -0.25, {}, {}), "stroke_circle: radius -0.25 is negative");
+  REQUIRE_THROWS_WITH(s.marker(sr::Marker::Circle, {0, 0}, -2e-7, {}), "marker: size -2e-07 is negative");
   REQUIRE_THROWS_WITH(s.marker(sr::Marker::Circle, {NAN, 0}, 3, {}), Catch::Contains("centre"));
   REQUIRE_THROWS_WITH(s.text("x", {0, INFINITY}, {}), Catch::Contains("anchor"));
   st.width = NAN;
