@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <string>
 #include <cstdint>
@@ -60,7 +61,6 @@ namespace sr = splinefig::render;
 namespace {
 
 constexpr int kSize = 1024;
-constexpr double kPi = 3.14159265358979323846;
 
 double frac(double v) { return v - std::floor(v); }
 
@@ -88,7 +88,7 @@ Workload segments(double width) {
   w.paths.reserve(100000);
   for (int i = 0; i < 100000; ++i) {
     double x0 = kSize * frac(0.6180339887498949 * i), y0 = kSize * frac(0.7548776662466927 * i);
-    double a = 2 * kPi * frac(0.5698402909980532 * i), len = 5 + 45 * frac(0.3247179572447460 * i);
+    double a = 2 * std::numbers::pi * frac(0.5698402909980532 * i), len = 5 + 45 * frac(0.3247179572447460 * i);
     w.paths.push_back({{{x0, y0}, {x0 + len * std::cos(a), y0 + len * std::sin(a)}}});
   }
   return w;
@@ -99,8 +99,8 @@ Workload lissajous() {
   Path p;
   p.pts.resize(1000000);
   for (int k = 0; k < 1000000; ++k) {
-    double t = 2 * kPi * k / 999999.0;
-    p.pts[static_cast<std::size_t>(k)] = {512 + 480 * std::sin(3 * t + kPi / 2), 512 + 480 * std::sin(4 * t)};
+    double t = 2 * std::numbers::pi * k / 999999.0;
+    p.pts[static_cast<std::size_t>(k)] = {512 + 480 * std::sin(3 * t + std::numbers::pi / 2), 512 + 480 * std::sin(4 * t)};
   }
   w.paths.push_back(std::move(p));
   return w;
@@ -114,7 +114,7 @@ Workload walks() {
     sr::Vec2 q{kSize * frac(0.6180339887498949 * p), kSize * frac(0.7548776662466927 * p)};
     path.pts.push_back(q);
     for (int j = 1; j < 100; ++j) {
-      double a = 2 * kPi * h01(static_cast<std::uint64_t>(100 * p + j));
+      double a = 2 * std::numbers::pi * h01(static_cast<std::uint64_t>(100 * p + j));
       q = {q.x + 3 * std::cos(a), q.y + 3 * std::sin(a)};
       path.pts.push_back(q);
     }

@@ -14,6 +14,7 @@
 // is linear in x and the midpoint rule integrates it exactly.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace oracle {
@@ -23,7 +24,7 @@ struct P2 {
 };
 using Poly = std::vector<P2>;
 
-inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kPi = std::numbers::pi;
 
 enum class Join { Miter, Round, Bevel };
 enum class Cap { Butt, Round, Square };

@@ -6,6 +6,7 @@
 #include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <complex>
 #include <vector>
 
@@ -13,7 +14,7 @@ using namespace splinefig;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = std::numbers::pi;
 
 double sinc(double x) { return x == 0 ? 1 : std::sin(pi * x) / (pi * x); }
 

@@ -7,6 +7,7 @@
 #include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <functional>
 #include <limits>
 
@@ -14,7 +15,7 @@ using namespace splinefig;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = std::numbers::pi;
 
 double below(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
 

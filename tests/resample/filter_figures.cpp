@@ -9,6 +9,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <numbers>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = std::numbers::pi;
 
 // Each test case renders into its own directory: ctest runs them in parallel, and `figures`
 // writes index.json next to the images.

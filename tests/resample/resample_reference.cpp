@@ -7,6 +7,7 @@
 #include <splinefig/spline/kernel.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <functional>
 #include <random>
 #include <type_traits>
@@ -15,7 +16,7 @@ using namespace splinefig;
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = std::numbers::pi;
 
 using RefKernel = std::function<double(double)>;
 

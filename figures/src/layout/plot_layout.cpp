@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -185,7 +186,7 @@ Rect text_rect(const render::TextExtent& e, Vec2 at, TextAnchor a, double angle)
   // In the label's frame (y down) it covers [ox, ox + width] x [oy - ascent, oy + descent].
   const double u0 = ox, u1 = ox + e.width, v0 = oy - e.ascent, v1 = oy + e.descent;
   if (angle == 0) return {at.x + u0, at.y + v0, at.x + u1, at.y + v1};
-  const double r = angle * 3.14159265358979323846 / 180;
+  const double r = angle * std::numbers::pi / 180;
   const double c = angle == 90 ? 0.0 : std::cos(r), sn = angle == 90 ? 1.0 : std::sin(r);
   Rect out{1e300, 1e300, -1e300, -1e300};
   for (double u : {u0, u1})
