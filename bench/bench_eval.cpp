@@ -6,7 +6,9 @@
 //   eval/<basis>/glm         glm::catmullRom per point (gtx/spline); GLM has no B-spline, so
 //                            the B-spline uses glm::cubic on the piece's Horner coefficients
 //                            (B times the four knots, computed once per piece)
-//   eval/write-floor         only writes the same number of 3-D points (the memory limit)
+//   eval/write-floor         only writes the same number of 3-D points with ordinary stores
+//   eval/write-floor-streamed  the same with non-temporal stores, as the sampler writes an output
+//                            this large (the memory limit)
 // Items are output points; every variant writes into the same preallocated buffer.
 #define GLM_ENABLE_EXPERIMENTAL
 #include <benchmark/benchmark.h>
@@ -16,6 +18,10 @@
 
 #include <cstdint>
 #include <vector>
+
+#if defined(__x86_64__) && defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace {
 
@@ -169,6 +175,28 @@ void eval_write_floor(benchmark::State& state) {
   items(state);
 }
 
+void eval_write_floor_streamed(benchmark::State& state) {
+#if defined(__x86_64__) && defined(__SSE2__)
+  std::vector<double>& out = output();
+  const __m128d a = _mm_set_pd(2.0, 1.0), b = _mm_set_pd(1.0, 3.0), c = _mm_set_pd(3.0, 2.0);
+  for (auto _ : state) {
+    double* p = out.data();
+    for (std::size_t i = 0; i + 1 < point_count; i += 2, p += 6) {  // 16-byte aligned (the vector's storage)
+      _mm_stream_pd(p, a);
+      _mm_stream_pd(p + 2, b);
+      _mm_stream_pd(p + 4, c);
+    }
+    _mm_sfence();
+    p[0] = 1.0, p[1] = 2.0, p[2] = 3.0;  // point_count is odd
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  items(state);
+#else
+  state.SkipWithError("no SSE2 streaming stores on this target");
+#endif
+}
+
 }  // namespace
 
 BENCHMARK_CAPTURE(eval_splinefig, catmull_rom, splinefig::catmull_rom())->Name("eval/catmull-rom/splinefig")->Unit(benchmark::kMillisecond);
@@ -178,5 +206,6 @@ BENCHMARK_CAPTURE(eval_splinefig, bspline, splinefig::bspline())->Name("eval/bsp
 BENCHMARK_CAPTURE(eval_memo, bspline, splinefig::bspline())->Name("eval/bspline/memo")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_glm_bspline)->Name("eval/bspline/glm")->Unit(benchmark::kMillisecond);
 BENCHMARK(eval_write_floor)->Name("eval/write-floor")->Unit(benchmark::kMillisecond);
+BENCHMARK(eval_write_floor_streamed)->Name("eval/write-floor-streamed")->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

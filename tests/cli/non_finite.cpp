@@ -95,3 +95,34 @@ TEST_CASE("kernel --report checks every measure before printing") {
               "--basis cardinal:a=1e307: the filter's energy overflows the range of a double");
   check_succeeds({"kernel", "--basis", "cardinal:a=1e300", "--step", "0.25"}, "");
 }
+
+TEST_CASE("eval finds an overflow in the middle of a long curve and in the partial block at its end") {
+  // 220000 2-D knots at grain 5: 2.2e6 numbers (17.6 MB), sampled with streaming stores, 10
+  // outputs a piece (two blocks of 4 and a partial block of 2). X'' of the B-spline on piece i
+  // is (1-u) P0 + (3u-2) P1 + (1-3u) P2 + u P3 over its knots P0..P3.
+  const std::size_t n = 220000;
+  auto curve = [&](std::size_t at, const char* a, std::size_t at2, const char* a2) {
+    std::string s;
+    s.reserve(n * 8);
+    for (std::size_t i = 0; i < n; ++i)
+      s += (i == at ? std::string(a) : i == at2 ? std::string(a2) : std::to_string(i % 7) + ".25") + ",0\n";
+    return s;
+  };
+  const std::vector<std::string> args{"eval", "--basis", "bspline", "--derivative", "2", "--grain", "5"};
+  // Knot 110001 (from 1) is 1e308: pieces 109997 and 109998 (from 0) weigh it by u and 1-3u,
+  // at most 1.4 in size (u <= 0.8), and stay finite; piece 109999 (knots 110000..110003)
+  // starts at P0 - 2 P1 + P2 = -2e308.
+  check_fails(args, curve(110000, "1e308", n, ""),
+              "stdin: knots 110000..110003 with --basis bspline: its second derivative overflows the range of a double at t = 109999");
+  // The last two knots -0.9e308 and 1e308: on the last piece (knots 219997..220000, t from
+  // 219996) 1.32e308 at u = 0.6, -1.4 x -0.9e308 + 0.8e308 = 2.06e308 at u = 0.8, the last
+  // output pair of the piece (the partial block).
+  check_fails(args, curve(n - 2, "-0.9e308", n - 1, "1e308"),
+              "stdin: knots 219997..220000 with --basis bspline: its second derivative overflows the range of a double at t = 219996.8");
+  // Without them the same curve is printed whole, every number finite.
+  const auto r = run(args, curve(n, "", n, ""));
+  CHECK(r.code == 0);
+  CHECK(count_lines(r.out) == (n - 3) * 5 + 1);
+  CHECK(r.out.find("inf") == std::string::npos);
+  CHECK(r.out.find("nan") == std::string::npos);
+}
