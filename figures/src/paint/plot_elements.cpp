@@ -337,7 +337,7 @@ void draw_annotation(const AnnotationElement& a, ElementPainter& d) {
                : a.anchor.valign == render::VAlign::Bottom ? at.y - h
                                                             : at.y - ext.ascent;
   Rect r{left - 3, top - 3, left + w + 3, top + h + 3};
-  d.occ.mark_rect(r, 4);
+  d.occ.mark_rect(r);
   // The arrow leaves the text box where the line from its centre to the tip crosses it.
   Vec2 c{0.5 * (r.left + r.right), 0.5 * (r.top + r.bottom)};
   double dx = to.x - c.x, dy = to.y - c.y, len = std::hypot(dx, dy);

@@ -112,7 +112,7 @@ Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>
     const double dy = std::max(0.0, inside.top - best_rect.top) - std::max(0.0, best_rect.bottom - inside.bottom);
     best_rect = {best_rect.left + dx, best_rect.top + dy, best_rect.right + dx, best_rect.bottom + dy};
   }
-  occ.mark_rect(best_rect.inflated(1), 4);
+  occ.mark_rect(best_rect.inflated(1));
   return {best_rect.left, best_rect.top + e.ascent};
 }
 
@@ -162,7 +162,7 @@ std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const st
       if (s.place == ax.legend) chosen = s;
   }
   double x = std::round(chosen.x), y = std::round(chosen.y);
-  occ.mark_rect({x, y, x + w, y + h}, 8);
+  occ.mark_rect({x, y, x + w, y + h});
   Color bg{1, 1, 1, 0.92f};
   p.fill({{{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}}}, render::FillRule::NonZero, bg);
   p.stroke({{x + 0.5, y + 0.5}, {x + w - 0.5, y + 0.5}, {x + w - 0.5, y + h - 0.5}, {x + 0.5, y + h - 0.5}}, true,
