@@ -1,7 +1,7 @@
 // A spec's [animation]: its filmstrips frame by frame, each frame a figure (see animation.hpp).
 #include <splinefig/figures/animation.hpp>
 #include <splinefig/base/limits.hpp>
-#include <splinefig/image/animation.hpp>
+#include <splinefig/image/webp_animation.hpp>
 
 #include "layout/generated.hpp"
 

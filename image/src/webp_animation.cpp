@@ -1,5 +1,5 @@
-// Animated WebP through libwebp's WebPAnimEncoder (see animation.hpp).
-#include <splinefig/image/animation.hpp>
+// Animated WebP through libwebp's WebPAnimEncoder (see webp_animation.hpp).
+#include <splinefig/image/webp_animation.hpp>
 #include <splinefig/image/atomic_file.hpp>
 #include <splinefig/image/io.hpp>
 #include <splinefig/base/limits.hpp>
