@@ -13,6 +13,7 @@ mpl = pytest.importorskip("matplotlib")
 mpl.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from PIL import Image  # noqa: E402
+from polygon_area import area, clip_convex  # noqa: E402
 
 ndimage = pytest.importorskip("scipy.ndimage")
 
@@ -327,30 +328,6 @@ def test_scene_paths_by_hand():
         splinefig.Scene(8, 8, blend="gamma")
 
 
-def _clip_convex(poly, clip):
-    """Sutherland-Hodgman: the part of polygon `poly` inside the convex, counter-clockwise `clip`."""
-    out = list(poly)
-    for i in range(len(clip)):
-        (ax, ay), (bx, by) = clip[i], clip[(i + 1) % len(clip)]
-        side = lambda p: (bx - ax) * (p[1] - ay) - (by - ay) * (p[0] - ax)  # noqa: E731
-        src, out = out, []
-        for j in range(len(src)):
-            p, q = src[j], src[(j + 1) % len(src)]
-            sp, sq = side(p), side(q)
-            if sp >= 0:
-                out.append(p)
-            if (sp >= 0) != (sq >= 0):
-                t = sp / (sp - sq)
-                out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-        if not out:
-            return []
-    return out
-
-
-def _area(poly):
-    return 0.5 * abs(sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(poly, poly[1:] + poly[:1])))
-
-
 def test_clip_path_is_exact():
     # A triangle clipped by another (a clip path, not a box): each pixel's alpha is the area of
     # the two triangles' intersection in it, found here by Sutherland-Hodgman. Multiplying the
@@ -365,14 +342,14 @@ def test_clip_path_is_exact():
     tri.set_clip_path(cut)
     im = png(fig, BACKEND, transparent=True)
     plt.close(fig)
-    inter = _clip_convex(shape, clip)
+    inter = clip_convex(shape, clip)
     worst = 0.0
     for row in range(H):
         for col in range(W):
             y0 = H - row - 1  # the pixel's bottom in display space
             square = [(col, y0), (col + 1, y0), (col + 1, y0 + 1), (col, y0 + 1)]
-            part = _clip_convex(inter, square)
-            want = _area(part) if len(part) >= 3 else 0.0
+            part = clip_convex(inter, square)
+            want = area(part) if len(part) >= 3 else 0.0
             worst = max(worst, abs(im[row, col, 3] / 255 - want))
     assert worst <= 0.5 / 255 + 1e-9
 
@@ -488,8 +465,8 @@ def test_hatch_lines_by_hand():
                 nrm = np.array([1, 1]) / np.sqrt(2) * (w / 2)
                 c = np.array([cx, cy])
                 strip = [tuple(c - d - nrm), tuple(c + d - nrm), tuple(c + d + nrm), tuple(c - d + nrm)]
-                part = _clip_convex(strip, tile[::-1] if _area_signed(tile) < 0 else tile)
-                want += _area(part) if len(part) >= 3 else 0.0
+                part = clip_convex(strip, tile[::-1] if _area_signed(tile) < 0 else tile)
+                want += area(part) if len(part) >= 3 else 0.0
     got = im[:, :, 3].sum() / 255
     print("hatch", got, want)
     assert abs(got - want) < 1e-3 * want + 2, (got, want)

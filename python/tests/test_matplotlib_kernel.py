@@ -22,6 +22,7 @@ from matplotlib.transforms import Affine2D  # noqa: E402
 from PIL import Image  # noqa: E402
 
 import splinefig  # noqa: E402
+from polygon_area import area, clip_convex  # noqa: E402
 
 BACKEND = "module://splinefig.matplotlib"
 
@@ -267,30 +268,6 @@ def test_a_quarter_turn_is_the_resampler_of_the_turned_source(spec, scale):
     close_to(got[:, :, :3], encode(ref[:, :, :3]), f"{spec} turned")
 
 
-def _clip_convex(poly, clip):
-    """Sutherland-Hodgman: the part of polygon `poly` inside the convex, counter-clockwise `clip`."""
-    out = list(poly)
-    for i in range(len(clip)):
-        (ax, ay), (bx, by) = clip[i], clip[(i + 1) % len(clip)]
-        src, out = out, []
-        for j in range(len(src)):
-            p, q = src[j], src[(j + 1) % len(src)]
-            sp = (bx - ax) * (p[1] - ay) - (by - ay) * (p[0] - ax)
-            sq = (bx - ax) * (q[1] - ay) - (by - ay) * (q[0] - ax)
-            if sp >= 0:
-                out.append(p)
-            if (sp >= 0) != (sq >= 0):
-                t = sp / (sp - sq)
-                out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-        if not out:
-            return []
-    return out
-
-
-def _area(poly):
-    return 0.5 * abs(sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(poly, poly[1:] + poly[:1])))
-
-
 def test_scipy_affine_transform_on_a_rotated_image():
     # Turned by atan(3/4) = 36.9 degrees and scaled by 5 ((u, v) -> (4u - 3v, 3u + 4v) + t, exact
     # in binary, with a bounding box of whole pixels so that matplotlib does not stretch it).
@@ -330,8 +307,8 @@ def test_scipy_affine_transform_on_a_rotated_image():
     for row in range(H):
         for col in range(W):
             square = [(col, -row - 1), (col + 1, -row - 1), (col + 1, -row), (col, -row)]
-            part = _clip_convex(square, quad)
-            want = _area(part) if len(part) >= 3 else 0.0
+            part = clip_convex(square, quad)
+            want = area(part) if len(part) >= 3 else 0.0
             worst = max(worst, abs(got[row, col, 3] / 255 - want))
     assert worst <= 0.5 / 255 + 1e-6
 
