@@ -40,16 +40,32 @@ double brute_force_crossings(const std::vector<Vec2>& p) {
   return count;
 }
 
-// The lower bound for one filled polygon on a canvas of w x h, through the renderer's own
-// preparation (the chains the sweep would get).
+// A scene's first item through the renderer's own preparation on the whole canvas: the chains
+// the sweep would get.
+struct PreparedItem {
+  render::detail::Geometry g;
+  render::detail::Prepared p;
+  int height = 0;
+};
+PreparedItem prepare_first(const render::Scene& scene) {
+  PreparedItem it;
+  it.height = scene.height();
+  const render::detail::Compositor comp(render::BlendSpace::linear);
+  render::detail::prepare_item(scene.items()[0], comp, {0, 0}, {0, 0, double(scene.width()), double(it.height)}, it.g,
+                               it.p, it.height);
+  return it;
+}
+
+// The lower bound on an item's crossings, in bands of 16 rows as the rasterizer asks for it.
+double bound_of(const PreparedItem& it) {
+  return render::detail::crossings_lower_bound(it.g, it.p.shape, 0, it.height, 16, INFINITY);
+}
+
+// The lower bound for one filled polygon on a canvas of w x h.
 double bound_for(const std::vector<Vec2>& contour, int w, int h) {
   render::Scene scene(w, h);
   scene.fill_polygon({contour}, render::FillRule::NonZero, {0, 0, 0, 1});
-  render::detail::Geometry g;
-  render::detail::Prepared p;
-  const render::detail::Compositor comp(render::BlendSpace::linear);
-  render::detail::prepare_item(scene.items()[0], comp, {0, 0}, {0, 0, double(w), double(h)}, g, p, h);
-  return render::detail::crossings_lower_bound(g, p.shape, 0, h, 16, INFINITY);
+  return bound_of(prepare_first(scene));
 }
 
 std::vector<Vec2> random_points(std::mt19937_64& rng, int n, double side) {
@@ -143,18 +159,13 @@ std::vector<Vec2> zigzag(int n, double y0, double y1) {
 }
 
 // The sweep of one item alone, counted by the sweep itself (renderer/src/sweep.hpp: work()).
-std::uint64_t sweep_work(const render::Scene& scene) {
-  render::detail::Geometry g;
-  render::detail::Prepared p;
-  const render::detail::Compositor comp(render::BlendSpace::linear);
-  const int w = scene.width(), h = scene.height();
-  render::detail::prepare_item(scene.items()[0], comp, {0, 0}, {0, 0, double(w), double(h)}, g, p, h);
+std::uint64_t sweep_work(const PreparedItem& it) {
   struct Null {
     void edge(double, double, double, double, double) {}
   } sink;
   render::detail::StripSweep sweep;
-  sweep.reset(g, p.shape);
-  for (int y = 0; y < h; y += 16) sweep.strip(y, std::min(y + 16, h), sink);
+  sweep.reset(it.g, it.p.shape);
+  for (int y = 0; y < it.height; y += 16) sweep.strip(y, std::min(y + 16, it.height), sink);
   return sweep.work();
 }
 
@@ -168,7 +179,7 @@ TEST_CASE("the sweep counts at least one unit of work per crossing", "[renderer]
     scene.fill_polygon({poly}, render::FillRule::NonZero, {0, 0, 0, 1});
     const double exact = brute_force_crossings(poly);
     INFO(n << " random points: " << exact << " crossings");
-    CHECK(static_cast<double>(sweep_work(scene)) >= exact);
+    CHECK(static_cast<double>(sweep_work(prepare_first(scene))) >= exact);
   }
 }
 
@@ -182,12 +193,8 @@ TEST_CASE("the bound sees the crossings of chains that begin or end inside a ban
   render::StrokeStyle style;
   style.width = 1.5;
   one.stroke_polyline(zigzag(3000, 40, 470), false, style, {0, 0, 0, 1});
-  render::detail::Geometry g;
-  render::detail::Prepared p;
-  const render::detail::Compositor comp(render::BlendSpace::linear);
-  render::detail::prepare_item(one.items()[0], comp, {0, 0}, {0, 0, 512, 512}, g, p, 512);
-  const double bound = render::detail::crossings_lower_bound(g, p.shape, 0, 512, 16, INFINITY);
-  const double work = static_cast<double>(sweep_work(one));
+  const PreparedItem it = prepare_first(one);
+  const double bound = bound_of(it), work = static_cast<double>(sweep_work(it));
   INFO("bound " << bound << ", sweep work " << work);
   CHECK(bound >= 3e4);
   CHECK(bound <= work);
@@ -203,12 +210,8 @@ TEST_CASE("an item whose crossings hide from the bound is stopped at the work li
   {
     render::Scene one(512, 512);
     one.stroke_polyline(zz, false, style, {0, 0, 0, 1});
-    render::detail::Geometry g;
-    render::detail::Prepared p;
-    const render::detail::Compositor comp(render::BlendSpace::linear);
-    render::detail::prepare_item(one.items()[0], comp, {0, 0}, {0, 0, 512, 512}, g, p, 512);
-    const double bound = render::detail::crossings_lower_bound(g, p.shape, 0, 512, 16, INFINITY);
-    const double work = static_cast<double>(sweep_work(one));
+    const PreparedItem it = prepare_first(one);
+    const double bound = bound_of(it), work = static_cast<double>(sweep_work(it));
     INFO("bound " << bound << ", sweep work " << work);
     REQUIRE(bound < 3e4);
     REQUIRE(work > 1e5);
