@@ -14,7 +14,10 @@ struct Prepared {
   const Scene::Item::Raster* raster = nullptr;  // images only
   Paint paint;         // the item's colour, premultiplied in the canvas's blend space
   int row0 = 0, row1 = 0;  // canvas rows the item can touch, [row0, row1)
-  std::uint32_t work_slot = 0;  // the rasterizer's counter of this item's sweep work (several threads)
+  // The rasterizer's counter of this item's sweep work on several threads; kNoWorkSlot for items
+  // that are not swept (images, simple shapes, nothing on the canvas).
+  static constexpr std::uint32_t kNoWorkSlot = ~std::uint32_t{0};
+  std::uint32_t work_slot = kNoWorkSlot;
 };
 
 // `clip` is the region whose geometry matters (the canvas grown by the filter's support), in

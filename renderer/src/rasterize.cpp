@@ -276,7 +276,7 @@ Image rasterize(const Scene& scene, int threads) {
         composite_raster(*p.raster, comp, img, r0, r1);
         continue;
       }
-      std::atomic<std::uint64_t>* total = p.shape.simple ? nullptr : &spent[p.work_slot];
+      std::atomic<std::uint64_t>* total = p.work_slot == Prepared::kNoWorkSlot ? nullptr : &spent[p.work_slot];
       const std::uint64_t used = total ? total->load() : 0;
       if (used > budget) {
         note_over(i);
