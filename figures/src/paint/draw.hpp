@@ -37,6 +37,7 @@ class Occupancy {
   std::vector<std::uint8_t> covered_;  // w x h
   std::vector<std::int32_t> starts_;   // (w + 1) x h: spans beginning minus spans ended before each cell
   std::uint64_t pending_ = 0;          // spans not yet resolved
+  int pending_y0_ = 1 << 30, pending_y1_ = -1;  // the rows they lie in
 };
 
 // A legend entry or an inline label's source: what to draw as the sample.

@@ -20,11 +20,14 @@ void Occupancy::span(int y, int x0, int x1) {
   ++row[x0];
   --row[x1 + 1];
   ++pending_;
+  pending_y0_ = std::min(pending_y0_, y);
+  pending_y1_ = std::max(pending_y1_, y);
 }
 
 void Occupancy::resolve() {
   if (pending_ == 0) return;
-  for (int y = 0; y < h_; ++y) {
+  // Only the rows that hold spans: a label's rectangle marked between two reads costs its rows.
+  for (int y = pending_y0_; y <= pending_y1_; ++y) {
     std::int32_t* row = &starts_[static_cast<size_t>(y) * (w_ + 1)];
     std::uint8_t* cov = &covered_[static_cast<size_t>(y) * w_];
     std::int32_t over = 0;
@@ -36,6 +39,8 @@ void Occupancy::resolve() {
     row[w_] = 0;
   }
   pending_ = 0;
+  pending_y0_ = h_;
+  pending_y1_ = -1;
 }
 
 void Occupancy::mark_point(Vec2 p, double radius) {
