@@ -71,7 +71,7 @@ std::array<double, 4> frames_box(const FigureSpec& spec) {
 std::string time_label(double t, bool key) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.2f", t);
-  return std::string("$t$ = ") + buf + (key ? ", a keyframe" : "");
+  return std::string("$t$ = ") + buf + (key ? ", a key frame" : "");
 }
 
 }  // namespace
@@ -98,7 +98,7 @@ std::string animation_alt(const FigureSpec& spec) {
   if (!a.alt.empty()) return a.alt;
   const std::string title = spec.title.empty() ? spec.name : spec.title;
   return "Animation of " + title + ": " + std::to_string(animation_frames(spec)) +
-         " frames, one in-between time each, the keyframes marked";
+         " frames, one in-between time each, the key frames marked";
 }
 
 FigureSpec animation_frame_spec(const FigureSpec& spec, int i) {

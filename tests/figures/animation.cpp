@@ -21,7 +21,9 @@
 #endif
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -62,7 +64,7 @@ std::string points(const std::vector<std::array<double, 2>>& pts) {
 std::string frame_spec(int i, const std::array<double, 2>& xr, const std::array<double, 2>& yr) {
   const double t = i / 6.0;
   char label[64];
-  std::snprintf(label, sizeof label, "$t$ = %.2f%s", t, i % 6 == 0 ? ", a keyframe" : "");
+  std::snprintf(label, sizeof label, "$t$ = %.2f%s", t, i % 6 == 0 ? ", a key frame" : "");
   std::string s = "title = \"In-between frames from key frames: spline against linear\"\n"
                   "[canvas]\nwidth = 760\nheight = 420\n[layout]\ncols = 2\n";
   const char* titles[2] = {"relaxed cubic spline through the key frames", "linear in-betweening (the jerky one)"};
@@ -120,6 +122,44 @@ Decoded decode(const std::string& bytes) {
 #endif
 
 }  // namespace
+
+TEST_CASE("s003-fig15's animation spells key frame as the still does") {
+  const std::string file = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/s003-fig15.toml";
+  const sf::FigureSpec spec = sf::load_spec(file);
+  auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  // The still: every line of its spec that is not a comment (title, caption, labels, legend).
+  std::string still;
+  {
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind('#', 0) != 0) still += lower(line) + "\n";
+  }
+  CHECK(still.find("key frame") != std::string::npos);
+  CHECK(still.find("keyframe") == std::string::npos);
+  // The animation: each frame's axis labels and titles, and its alt text.
+  const int frames = sf::animation_frames(spec);
+  REQUIRE(frames == 13);
+  int keyed = 0;
+  for (int i = 0; i < frames; ++i) {
+    const sf::FigureSpec f = sf::animation_frame_spec(spec, i);
+    for (const auto& item : f.items)
+      if (const auto* ax = std::get_if<sf::AxesSpec>(&item)) {
+        for (const std::string& text : {ax->x.label, ax->y.label, ax->title}) {
+          INFO("frame " << i << ": " << text);
+          CHECK(lower(text).find("keyframe") == std::string::npos);
+        }
+        if (sf::animation_keyframe(spec, i)) {
+          CHECK(ax->x.label.find(", a key frame") != std::string::npos);
+          ++keyed;
+        }
+      }
+  }
+  CHECK(keyed == 2 * 3);  // t = 0, 1, 2 in both panels
+  CHECK(lower(sf::animation_alt(spec)).find("keyframe") == std::string::npos);
+}
 
 TEST_CASE("s003-fig15's animation: the frames' range holds every frame, computed by hand") {
   const sf::FigureSpec spec = sf::load_spec(std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/s003-fig15.toml");

@@ -261,6 +261,86 @@ TEST_CASE("caption fields: values, number format and errors", "[captions]") {
   figtest::check_spec_errors(cases, "c.toml");
 }
 
+TEST_CASE("caption fields: along, mirror_x and fractions", "[captions]") {
+  const std::string head = "caption = \"c = {=d}\"\n";
+  const std::string axes =
+      "[axes]\nx_range = [0, 6]\ny_range = [0, 6]\n"
+      "[[axes.curve]]\nknots = [[0, 0], [6, 0], [6, 6]]\nbasis = \"bspline\"\nends = \"double\"\n"
+      "[[axes.polygon]]\npoints = [[0, 0], [1, 2], [3, 2], [4, 0]]\n"
+      "[[axes.polygon]]\npoints = [[0, 0], [1, 2], [3, 1], [4, 0]]\n"
+      "[[axes.bezier]]\npoints = [[0, 0], [1, 1], [2.5, 1], [3, 0]]\n";
+  auto field = [](const std::string& body) { return "[[caption_field]]\nname = \"d\"\n" + body + "\n"; };
+  auto caption_of = [&](const std::string& body) {
+    return layout_figure(parse_spec(head + field(body) + axes, "c.toml")).caption;
+  };
+  // The uniform B-spline with doubled ends K0 K0 K1 K2 K2 starts at (K0 + 4 K0 + K1) / 6 and
+  // ends at (K1 + 4 K2 + K2) / 6: a sixth of the first leg from K0, a sixth of the last from K2.
+  CHECK(caption_of("element = \"axes.curve[0]\"\nvalue = \"along(0, 0, 1)\"\nfraction = true") == "c = 1/6");
+  CHECK(caption_of("element = \"axes.curve[0]\"\nvalue = \"along(2, 2, 1)\"\nfraction = true") == "c = 1/6");
+  CHECK(caption_of("element = \"axes.curve[0]\"\nvalue = \"along(2, 1, 2)\"\nfraction = true") == "c = 5/6");
+  CHECK(caption_of("element = \"axes.curve[0]\"\nvalue = \"along(0, 0, 1)\"\ndecimals = 4") == "c = 0.1667");
+  // At t = 1/2 the weights (1, 23, 23, 1) / 48 of K0 K0 K1 K2 give (24 * 6, 6) / 48 = (3, 1/8).
+  CHECK(caption_of("element = \"axes.curve[0]\"\nvalue = \"point(0.5)\"\nfraction = true") == "c = (3, 1/8)");
+  // (0,0), (1,2), (3,2), (4,0) mirror under x -> 4 - x.
+  CHECK(caption_of("element = \"axes.polygon[0]\"\nvalue = \"mirror_x()\"\ndecimals = 0") == "c = 4");
+  // P''(0) = (3, -6) of the Bezier, as whole numbers; a minus is U+2212.
+  CHECK(caption_of("element = \"axes.bezier[0]\"\nvalue = \"d2(0)\"\nfraction = true") == "c = (3, \u22126)");
+  struct Case {
+    std::string text, expect;
+  };
+  const std::vector<Case> cases = {
+      {head + field("element = \"axes.curve[0]\"\nvalue = \"along(1, 0, 1)\"") + axes,
+       // (K0 + 4 K1 + K2) / 6 = (5, 1) at t = 1: on neither leg.
+       "c.toml:2: caption_field[0]: value: along(): the point at t = 1.000000, (5.000000, 1.000000), is not on the leg from "
+       "knot 0 to knot 1"},
+      {head + field("element = \"axes.curve[0]\"\nvalue = \"along(0, 0, 3)\"") + axes,
+       "c.toml:2: caption_field[0]: value: knot 3 of \"axes.curve[0]\", which has 3 points (0 .. 2)"},
+      {head + field("element = \"axes.curve[0]\"\nvalue = \"along(0, 1, 1)\"") + axes,
+       "c.toml:5: caption_field[0].value: along(t, i, j) needs two different knots i and j"},
+      {head + field("element = \"axes.curve[0]\"\nvalue = \"along(0, 0.5, 1)\"") + axes,
+       "c.toml:5: caption_field[0].value: along(t, i, j) takes knot indices 0, 1, 2, ... for i and j, got 0.500000"},
+      {head + field("element = \"axes.polygon[1]\"\nvalue = \"mirror_x()\"") + axes,
+       "c.toml:2: caption_field[0]: value: mirror_x(): the points of \"axes.polygon[1]\" are not their own mirror image "
+       "under x -> 4.000000 - x (point 1 against point 2)"},
+      // P(1/2) = (1.6875, 0.75) = (27/16, 3/4); curvature(0) = -1/(2 sqrt 2) is no fraction.
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"curvature(0)\"\nfraction = true") + axes,
+       "c.toml:2: caption_field[0]: fraction: \u22120.353553390593 is no fraction p/q with q <= 1000"},
+      {head + field("element = \"axes.bezier[0]\"\nvalue = \"points()\"\nfraction = true") + axes,
+       "c.toml:6: caption_field[0].fraction: points() prints decimals"},
+  };
+  figtest::check_spec_errors(cases, "c.toml");
+}
+
+TEST_CASE("bias' caption prints where the curves start and stop and the polygon's mirror", "[captions]") {
+  const FigureSpec spec = builtin("bias");
+  const std::string caption = built_caption(spec);
+  CAPTURE(caption);
+  // The polygon (0,0), (1,2), ..., (6,0): point k mirrors point 6 - k under x -> x0 + x6 - x.
+  const auto& poly = element<SeriesElement>(spec, 0, 0).points;
+  REQUIRE(poly.size() == 7);
+  for (std::size_t k = 0; k < 7; ++k) {
+    CHECK(poly[k].x + poly[6 - k].x == poly[0].x + poly[6].x);
+    CHECK(poly[k].y == poly[6 - k].y);
+  }
+  CHECK(contains(caption, "mirror image under x → " + fmt(poly[0].x + poly[6].x, 0) + " − x"));
+  CHECK(contains(caption, "x → 6 − x"));
+  // The memo's B-spline matrix, last row (1 4 1 0) / 6, with doubled ends K0 K0 K1 ...: the
+  // curve starts at (K0 + 4 K0 + K1) / 6, a sixth of the way from K0 to K1, and ends a sixth of
+  // the way from K6 back to K5.
+  CHECK(contains(caption, "the B-spline (short dashes) starts 1/6 of the way along the first leg and stops 1/6 of the "
+                          "last leg short of the last knot"));
+  // A polygon that is no longer symmetric cannot be captioned as one.
+  FigureSpec moved = spec;
+  std::get<SeriesElement>(std::get<AxesSpec>(moved.items.at(0)).elements.at(0)).points[1].x = 1.25;
+  try {
+    built_caption(moved);
+    FAIL("a polygon without its mirror was captioned");
+  } catch (const std::exception& e) {
+    CHECK(contains(e.what(), "mirror_x(): the points of \"axes.polygon[0]\" are not their own mirror image"));
+  }
+  // Where b1 = 5 starts and ends: the next test case.
+}
+
 TEST_CASE("s002-fig474's caption prints the point counts 3 + 2^k, and (b) is the tree of groups", "[captions]") {
   const FigureSpec spec = builtin("s002-fig474");
   const std::string caption = built_caption(spec);
@@ -497,8 +577,9 @@ TEST_CASE("bias' caption prints where the b1 = 5 curve starts and ends on the en
   const Vec2 B0{0, 0}, B1{1, 2}, B5{5, 2}, B6{6, 0};
   const Vec2 start = (1 / d) * ((d - 2) * B0 + 2 * B1), end = (1 / d) * (2 * b1 * b1 * b1 * B5 + (d - 2 * b1 * b1 * b1) * B6);
   CHECK(d == 372);
-  CHECK(contains(caption, "(b₁ = 5: it starts at " + fmt(start, 2) + " and ends at " + fmt(end, 2) +
-                              ", on the leg from (6, 0) to (5, 2))"));
+  // The end lies 2 b1^3 / d = 250/372 of the way from B6 to B5.
+  CHECK(contains(caption, "(b₁ = 5: it starts at " + fmt(start, 2) + " and ends at " + fmt(end, 2) + ", " +
+                              fmt(2 * b1 * b1 * b1 / d, 2) + " of the way from (6, 0) to (5, 2))"));
 }
 
 TEST_CASE("bias' caption prints the curves' own bias and tension values", "[captions]") {

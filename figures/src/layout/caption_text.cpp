@@ -111,9 +111,61 @@ double extremum(const Path& path, double a, double b, double sign) {
   return g(t) >= best_v ? t : a + (b - a) * best / kSteps;
 }
 
+Value evaluate(const FigureSpec& spec, const CaptionField& f);
+
+// The i-th input point of the element named by the field.
+Vec2 knot_of(const FigureSpec& spec, const CaptionField& f, double index) {
+  const std::vector<Vec2>* pts = input_points(find_element(spec, f));
+  if (!pts) fail(f, "value: \"" + f.element + "\" has no points or knots for " + f.function + "()");
+  const auto i = static_cast<std::size_t>(index);
+  if (i >= pts->size())
+    fail(f, "value: knot " + std::to_string(i) + " of \"" + f.element + "\", which has " + std::to_string(pts->size()) +
+                " points (0 .. " + std::to_string(pts->size() - 1) + ")");
+  return (*pts)[i];
+}
+
+// along(t, i, j): how far along the leg from knot i to knot j the curve's point at t lies, as a
+// fraction of the leg; the point must lie on the leg (within 1e-9 of its length).
+Value along(const FigureSpec& spec, const CaptionField& f) {
+  const Vec2 a = knot_of(spec, f, f.args[1]), b = knot_of(spec, f, f.args[2]);
+  CaptionField at = f;
+  at.function = "point";
+  at.args = {f.args[0]};
+  const Value p = evaluate(spec, at);
+  const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+  if (!(len2 > 0)) fail(f, "value: along(): knots " + tick_number(f.args[1], 0) + " and " + tick_number(f.args[2], 0) + " are one point");
+  const double px = p.v[0] - a.x, py = p.v[1] - a.y;
+  const double s = (px * dx + py * dy) / len2, off = std::abs(px * dy - py * dx) / std::sqrt(len2);
+  if (off > 1e-9 * std::sqrt(len2) || s < -1e-12 || s > 1 + 1e-12)
+    fail(f, "value: along(): the point at t = " + tick_number(f.args[0], 6) + ", (" + tick_number(p.v[0], 6) + ", " +
+                tick_number(p.v[1], 6) + "), is not on the leg from knot " + tick_number(f.args[1], 0) + " to knot " +
+                tick_number(f.args[2], 0));
+  return {{s, 0}, false};
+}
+
+// mirror_x(): the c for which the element's points are their own mirror image under x -> c - x,
+// point k mapped to point n-1-k (within 1e-12 of the points' size).
+Value mirror_x(const FigureSpec& spec, const CaptionField& f) {
+  const std::vector<Vec2>* pts = input_points(find_element(spec, f));
+  if (!pts || pts->empty()) fail(f, "value: \"" + f.element + "\" has no points or knots for mirror_x()");
+  const std::size_t n = pts->size();
+  const double c = (*pts)[0].x + (*pts)[n - 1].x;
+  double size = 1;
+  for (Vec2 p : *pts) size = std::max({size, std::abs(p.x), std::abs(p.y)});
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2 p = (*pts)[k], q = (*pts)[n - 1 - k];
+    if (std::abs(p.x + q.x - c) > 1e-12 * size || std::abs(p.y - q.y) > 1e-12 * size)
+      fail(f, "value: mirror_x(): the points of \"" + f.element + "\" are not their own mirror image under x -> " +
+                  tick_number(c, 6) + " - x (point " + std::to_string(k) + " against point " + std::to_string(n - 1 - k) + ")");
+  }
+  return {{c, 0}, false};
+}
+
 Value evaluate(const FigureSpec& spec, const CaptionField& f) {
   const PlotElement& e = find_element(spec, f);
   const std::string& fn = f.function;
+  if (fn == "along") return along(spec, f);
+  if (fn == "mirror_x") return mirror_x(spec, f);
   if (fn == "knot") {
     const std::vector<Vec2>* pts = input_points(e);
     if (!pts) fail(f, "value: \"" + f.element + "\" has no points or knots for knot()");
@@ -258,6 +310,28 @@ std::string point_list(const FigureSpec& spec, const CaptionField& f) {
   return out;
 }
 
+// v as p/q in lowest terms, q <= 1000 (an integer as itself, a negative with U+2212); a value
+// no such fraction gives to within 1e-9 is an error naming the field.
+std::string fraction_text(double v, const CaptionField& f) {
+  for (long q = 1; q <= 1000; ++q) {
+    const double p = std::round(v * static_cast<double>(q));
+    if (std::abs(p / static_cast<double>(q) - v) <= 1e-9 * std::max(1.0, std::abs(v))) {
+      const long num = static_cast<long>(std::abs(p));
+      std::string s = (p < 0 ? "\u2212" : "") + std::to_string(num);
+      if (q > 1) {
+        s += '/';
+        s += std::to_string(q);
+      }
+      return s;
+    }
+  }
+  fail(f, "fraction: " + tick_number(v, 12) + " is no fraction p/q with q <= 1000 (write decimals instead)");
+}
+
+std::string number_text(double v, const CaptionField& f) {
+  return f.fraction ? fraction_text(v, f) : tick_number(v, f.decimals);
+}
+
 }  // namespace
 
 std::string caption_text(const FigureSpec& spec) {
@@ -271,11 +345,11 @@ std::string caption_text(const FigureSpec& spec) {
       continue;
     }
     const Value v = evaluate(spec, f);
-    std::string text = tick_number(v.v[0], f.decimals);
+    std::string text = number_text(v.v[0], f);
     if (v.vector) {  // "(x, y)", built by appends (GCC 12 -Wrestrict, PR 105329, on "(" + s)
       text.insert(text.begin(), '(');
       text += ", ";
-      text += tick_number(v.v[1], f.decimals);
+      text += number_text(v.v[1], f);
       text += ')';
     }
     values[f.name] = std::move(text);

@@ -23,7 +23,8 @@ const std::map<std::string, int, std::less<>>& functions() {
       {"point", 1},    {"x", 1},        {"y", 1},        {"d1", 1},       {"d2", 1},   {"curvature", 1},
       {"max_y", 2},    {"min_y", 2},    {"argmax_y", 2}, {"argmin_y", 2}, {"knot", 1}, {"count", 0},
       {"b1", 1},       {"b2", 1},       {"item", 1},     {"k", 1},        {"db", 1},       {"points", 0},
-      {"steps", 0},    {"leakage", 0},  {"marks", 0},    {"bias", 0},     {"tension", 0}};
+      {"steps", 0},    {"leakage", 0},  {"marks", 0},    {"bias", 0},     {"tension", 0},
+      {"along", 3},    {"mirror_x", 0}};
   return f;
 }
 
@@ -46,7 +47,7 @@ std::string parse_value(const std::string& text, CaptionField& f) {
   const auto fn = functions().find(f.function);
   if (fn == functions().end())
     return "\"" + f.function + "\" is not a value function (point, x, y, d1, d2, curvature, max_y, min_y, argmax_y, "
-           "argmin_y, knot, count, item, b1, b2, k, db, points, steps, leakage, marks, bias, tension)";
+           "argmin_y, knot, count, item, b1, b2, k, db, points, steps, leakage, marks, bias, tension, along, mirror_x)";
   const std::string inner = trim(text.substr(open + 1, close - open - 1));
   std::size_t at = 0;
   while (!inner.empty() && at <= inner.size()) {
@@ -64,6 +65,12 @@ std::string parse_value(const std::string& text, CaptionField& f) {
   if (f.function == "knot" || f.function == "item" || f.function == "b1" || f.function == "b2")
     if (f.args[0] < 0 || f.args[0] != std::floor(f.args[0]) || f.args[0] > 1e9)
       return f.function + "() takes an index 0, 1, 2, ..., got " + tick_number(f.args[0], 6);
+  if (f.function == "along") {
+    for (int k = 1; k <= 2; ++k)
+      if (f.args[k] < 0 || f.args[k] != std::floor(f.args[k]) || f.args[k] > 1e9)
+        return "along(t, i, j) takes knot indices 0, 1, 2, ... for i and j, got " + tick_number(f.args[k], 6);
+    if (f.args[1] == f.args[2]) return "along(t, i, j) needs two different knots i and j";
+  }
   if (f.args.size() == 2 && !(f.args[0] < f.args[1])) return f.function + "(a, b) needs a < b";
   return {};
 }
@@ -102,6 +109,8 @@ std::vector<CaptionField> parse_caption_fields(TableReader& r, const std::string
     if (!value) s.fail("value", "needs value = \"FUNCTION(ARGUMENTS)\", e.g. \"d2(0)\"");
     if (std::string bad = parse_value(*value, f); !bad.empty()) s.fail("value", bad);
     f.decimals = s.integer("decimals", 2, 0, 12);
+    f.fraction = s.boolean("fraction", false);
+    if (f.fraction && f.function == "points") s.fail("fraction", "points() prints decimals; fraction = true is for a value");
     fields.push_back(std::move(f));
   });
   std::string problem;

@@ -426,6 +426,7 @@ struct CaptionField {
   std::string function; // point, x, y, d1, d2, curvature, max_y, ..., knot, count, b1, b2
   std::vector<double> args;
   int decimals = 2;
+  bool fraction = false;  // printed as p/q in lowest terms (q <= 1000) instead of with decimals
   SpecLocation origin;  // of its [[caption_field]] table, for messages
 };
 
