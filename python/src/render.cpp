@@ -267,6 +267,49 @@ void bind_render(py::module_& m) {
         for (py::ssize_t i = 0; i < origins.shape(0); ++i, o += 2)
           s.image(im, {o[0], o[1]}, {o[0] + w, o[1] + h}, render::Scene::Sampling::Nearest);
       }, py::arg("rgba"), py::arg("origins"), py::arg("encoding") = "linear")
+      // The same, composited first into one picture over the places' bounding box, which goes
+      // into the scene as one item: each copy over the ones before it (associated alpha, the
+      // scene's over: p + d (1 - alpha), in the picture's values), which over is associative
+      // with, so the canvas gets what the copies one by one would give it (to float rounding).
+      // The places are whole pixels; the copies of a marker all over a plot cost one item
+      // instead of one each. The box is bounded by the places, which the caller keeps on the
+      // canvas.
+      .def("stamps", [](render::Scene& s, const f32array& rgba, const f64array& origins, const std::string& encoding) {
+        if (origins.ndim() != 2 || origins.shape(1) != 2) throw py::value_error("origins: expected an (n, 2) array");
+        if (rgba.ndim() != 3 || rgba.shape(2) != 4) throw py::value_error("rgba: expected an (h, w, 4) float32 array");
+        const Encoding enc = pick<Encoding>(encoding, "encoding", {{"linear", Encoding::linear}, {"srgb", Encoding::srgb}});
+        const py::ssize_t n = origins.shape(0);
+        if (n == 0) return;
+        const int w = static_cast<int>(rgba.shape(1)), h = static_cast<int>(rgba.shape(0));
+        const double* o = origins.data();
+        double x0 = o[0], y0 = o[1], x1 = o[0], y1 = o[1];
+        for (py::ssize_t i = 0; i < n; ++i) {
+          const double x = o[2 * i], y = o[2 * i + 1];
+          if (!(x == std::floor(x) && y == std::floor(y) && std::abs(x) < 1e9 && std::abs(y) < 1e9))
+            throw py::value_error("origins: place " + std::to_string(i) + " is not a whole pixel on the canvas");
+          x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+        }
+        const double bw = x1 - x0 + w, bh = y1 - y0 + h;
+        if (bw * bh > 4.0 * (double(s.width()) + w) * (double(s.height()) + h))
+          throw py::value_error("origins: the places span " + std::to_string(bw) + " x " + std::to_string(bh) + " px, past the canvas");
+        auto layer = std::make_shared<Image>(Image::zeros(static_cast<int>(bw), static_cast<int>(bh), 4, enc));
+        const float* src = rgba.data();
+        {
+          py::gil_scoped_release unlocked;
+          for (py::ssize_t i = 0; i < n; ++i) {
+            const int ox = static_cast<int>(o[2 * i] - x0), oy = static_cast<int>(o[2 * i + 1] - y0);
+            for (int y = 0; y < h; ++y) {
+              const float* p = src + 4 * static_cast<std::size_t>(y) * w;
+              float* d = layer->pixel(ox, oy + y);
+              for (int x = 0; x < w; ++x, p += 4, d += 4) {
+                const float k = 1.0f - p[3];
+                for (int ch = 0; ch < 4; ++ch) d[ch] = p[ch] + d[ch] * k;
+              }
+            }
+          }
+        }
+        s.image(layer, {x0, y0}, {x0 + bw, y0 + bh}, render::Scene::Sampling::Nearest);
+      }, py::arg("rgba"), py::arg("origins"), py::arg("encoding") = "linear")
       .def_property_readonly("height", &render::Scene::height)
       .def("polyline", [](render::Scene& s, const f64array& pts, bool closed, const std::array<float, 4>& color, double width,
                           const std::string& join, const std::string& cap, double miter_limit, std::vector<double> dashes,

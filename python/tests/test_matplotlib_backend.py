@@ -541,3 +541,63 @@ def test_side_by_side_pixels_match_the_exact_oracle():
             assert any(0.02 < k < 0.98 for k in covers), (name, col, row, covers)  # an edge: partly covered
             assert np.abs(ours[row, col] - want).max() <= 1, (name, col, row, want, ours[row, col])
             assert np.abs(agg[row, col] - want).max() > 48, (name, col, row, want, agg[row, col])
+
+
+def test_png_writer_against_pillow_and_openimageio(tmp_path):
+    """The backend writes its PNGs itself (Up filter, zlib level 1): read back by Pillow and by
+    OpenImageIO, every file gives the canvas's pixels, and the metadata and resolution Pillow
+    reads are those of the same figure written through matplotlib's PIL writer (pil_kwargs).
+    (Seen failing with the rows left unfiltered under the Up filter's byte, and with the dpi
+    chunk left out.)"""
+    from splinefig.matplotlib import FigureCanvasSplinefig
+
+    fig = busy()
+    canvas = FigureCanvasSplinefig(fig)
+    canvas.draw()
+    want = np.asarray(canvas.buffer_rgba())
+    for dpi, meta in ((100, None), (72, {"Title": "\u03a9mega", "Author": "a, b", "Software": None})):
+        ours, pil = tmp_path / f"ours{dpi}.png", tmp_path / f"pil{dpi}.png"
+        fig.savefig(ours, backend=BACKEND, dpi=dpi, metadata=meta)
+        fig.savefig(pil, backend=BACKEND, dpi=dpi, metadata=meta, pil_kwargs={})
+        a, b = Image.open(ours), Image.open(pil)
+        assert a.info == b.info and a.mode == "RGBA"
+        assert (np.asarray(a) == np.asarray(b)).all()
+        if dpi == 100:
+            assert (np.asarray(a) == want).all()
+            assert a.info["Software"].startswith("Matplotlib version")
+        else:
+            assert "Software" not in a.info and a.info["Title"] == "\u03a9mega"
+        oiio = pytest.importorskip("OpenImageIO")
+        got = oiio.ImageBuf(str(ours)).get_pixels(oiio.UINT8)
+        assert (got == np.asarray(a)).all()
+    plt.close(fig)
+
+
+def test_scene_stamps_composite_in_order():
+    """Scene.stamps (a marker's picture at many whole-pixel places, composited into one item)
+    gives the canvas of the copies composited one by one in order, computed here in float64 with
+    numpy: overlapping translucent copies, one across the canvas's edge, both encodings. A place
+    between pixels, or places spanning far past the canvas, are refused. (Seen failing with the
+    copies composited under the ones before them.)"""
+    import splinefig
+
+    rng = np.random.default_rng(5)
+    pic = rng.uniform(size=(5, 7, 4)).astype(np.float32)
+    pic[:, :, :3] *= pic[:, :, 3:]  # associated alpha
+    origins = np.array([(2, 3), (4, 4), (3, 2), (-2, 9), (14, 10), (4, 4)], dtype=np.float64)
+    for blend in ("linear", "srgb"):
+        s = splinefig.Scene(18, 14, background=(0, 0, 0, 0), blend=blend)
+        s._s.stamps(pic, origins, blend)
+        got = s._s.render(1)
+        want = np.zeros((14, 18, 4))
+        for x, y in origins.astype(int):
+            for j in range(5):
+                for i in range(7):
+                    if 0 <= x + i < 18 and 0 <= y + j < 14:
+                        p = pic[j, i].astype(np.float64)
+                        want[y + j, x + i] = p + want[y + j, x + i] * (1 - p[3])
+        assert np.abs(got - want).max() < 1e-5, blend
+    with pytest.raises(ValueError, match="origins: place 1 is not a whole pixel"):
+        splinefig.Scene(8, 8)._s.stamps(pic, np.array([(0, 0), (0.5, 1)]), "linear")
+    with pytest.raises(ValueError, match="past the canvas"):
+        splinefig.Scene(8, 8)._s.stamps(pic, np.array([(0, 0), (1e6, 1e6)]), "linear")
