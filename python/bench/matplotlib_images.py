@@ -333,6 +333,7 @@ def compose(caption, agg, ours, crop, marks, labels):
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..", "docs", "images")
+    os.makedirs(out, exist_ok=True)
     for make, name, inside in ((lines, "lines", True), (text, "text", False)):
         fig, ax = make()
         agg = render(fig, None)
