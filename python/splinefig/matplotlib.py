@@ -877,11 +877,13 @@ class RendererSplinefig(RendererBase):
                & (offs[:, 1] + ext.y1 + margin >= 0) & (offs[:, 1] + ext.y0 - margin <= H))
         offs = offs[vis] - (t.x0, t.y0)
         core = t.core
-        if len(offs) > 1 and t.clip_path is None:
+        if len(offs) and t.clip_path is None:
             # Every marker sits at a whole-pixel offset of the same outline, so each covers its
             # pixels exactly as the first does: the marker is rasterized once (its stroke over its
             # fill over nothing, which over is associative with) and that picture is composited
-            # at each place, as AGG blits its marker's scanlines.
+            # at each place, as AGG blits its marker's scanlines. The picture is kept across
+            # draws, so a single marker goes this way too: an axis's ticks are one draw_markers
+            # call each, the same few pictures in every figure and every save.
             x0 = int(math.floor(ext.x0 - margin))
             y0 = int(math.floor(ext.y0 - margin))
             w = int(math.ceil(ext.x1 + margin)) - x0

@@ -280,7 +280,16 @@ void bind_render(py::module_& m) {
         const Encoding enc = pick<Encoding>(encoding, "encoding", {{"linear", Encoding::linear}, {"srgb", Encoding::srgb}});
         const py::ssize_t n = origins.shape(0);
         if (n == 0) return;
-        const int w = static_cast<int>(rgba.shape(1)), h = static_cast<int>(rgba.shape(0));
+        // Only the picture's pixels that hold something (a marker's picture has a margin of
+        // nothing around it): over leaves the canvas as it is under a pixel of 0.
+        const int pw = static_cast<int>(rgba.shape(1)), ph = static_cast<int>(rgba.shape(0));
+        int cx0 = pw, cy0 = ph, cx1 = 0, cy1 = 0;
+        for (int y = 0; y < ph; ++y)
+          for (int x = 0; x < pw; ++x) {
+            const float* p = rgba.data() + 4 * (static_cast<std::size_t>(y) * pw + x);
+            if (p[0] != 0 || p[1] != 0 || p[2] != 0 || p[3] != 0)
+              cx0 = std::min(cx0, x), cy0 = std::min(cy0, y), cx1 = std::max(cx1, x + 1), cy1 = std::max(cy1, y + 1);
+          }
         const double* o = origins.data();
         double x0 = o[0], y0 = o[1], x1 = o[0], y1 = o[1];
         for (py::ssize_t i = 0; i < n; ++i) {
@@ -289,6 +298,8 @@ void bind_render(py::module_& m) {
             throw py::value_error("origins: place " + std::to_string(i) + " is not a whole pixel on the canvas");
           x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
         }
+        if (cx1 <= cx0) return;
+        const int w = cx1 - cx0, h = cy1 - cy0;
         const double bw = x1 - x0 + w, bh = y1 - y0 + h;
         if (bw * bh > 4.0 * (double(s.width()) + w) * (double(s.height()) + h))
           throw py::value_error("origins: the places span " + std::to_string(bw) + " x " + std::to_string(bh) + " px, past the canvas");
@@ -299,7 +310,7 @@ void bind_render(py::module_& m) {
           for (py::ssize_t i = 0; i < n; ++i) {
             const int ox = static_cast<int>(o[2 * i] - x0), oy = static_cast<int>(o[2 * i + 1] - y0);
             for (int y = 0; y < h; ++y) {
-              const float* p = src + 4 * static_cast<std::size_t>(y) * w;
+              const float* p = src + 4 * (static_cast<std::size_t>(y + cy0) * pw + cx0);
               float* d = layer->pixel(ox, oy + y);
               for (int x = 0; x < w; ++x, p += 4, d += 4) {
                 const float k = 1.0f - p[3];
@@ -308,7 +319,7 @@ void bind_render(py::module_& m) {
             }
           }
         }
-        s.image(layer, {x0, y0}, {x0 + bw, y0 + bh}, render::Scene::Sampling::Nearest);
+        s.image(layer, {x0 + cx0, y0 + cy0}, {x0 + cx0 + bw, y0 + cy0 + bh}, render::Scene::Sampling::Nearest);
       }, py::arg("rgba"), py::arg("origins"), py::arg("encoding") = "linear")
       .def_property_readonly("height", &render::Scene::height)
       .def("polyline", [](render::Scene& s, const f64array& pts, bool closed, const std::array<float, 4>& color, double width,

@@ -576,14 +576,16 @@ def test_png_writer_against_pillow_and_openimageio(tmp_path):
 def test_scene_stamps_composite_in_order():
     """Scene.stamps (a marker's picture at many whole-pixel places, composited into one item)
     gives the canvas of the copies composited one by one in order, computed here in float64 with
-    numpy: overlapping translucent copies, one across the canvas's edge, both encodings. A place
-    between pixels, or places spanning far past the canvas, are refused. (Seen failing with the
-    copies composited under the ones before them.)"""
+    numpy: overlapping translucent copies of a picture with an empty margin, one across the
+    canvas's edge, both encodings. A place between pixels, or places spanning far past the canvas,
+    are refused. (Seen failing with the copies composited under the ones before them, and with
+    the margin's width left out of the place.)"""
     import splinefig
 
     rng = np.random.default_rng(5)
     pic = rng.uniform(size=(5, 7, 4)).astype(np.float32)
     pic[:, :, :3] *= pic[:, :, 3:]  # associated alpha
+    pic = np.pad(pic, ((1, 2), (2, 1), (0, 0)))  # a margin of nothing, as a marker's picture has
     origins = np.array([(2, 3), (4, 4), (3, 2), (-2, 9), (14, 10), (4, 4)], dtype=np.float64)
     for blend in ("linear", "srgb"):
         s = splinefig.Scene(18, 14, background=(0, 0, 0, 0), blend=blend)
@@ -591,8 +593,8 @@ def test_scene_stamps_composite_in_order():
         got = s._s.render(1)
         want = np.zeros((14, 18, 4))
         for x, y in origins.astype(int):
-            for j in range(5):
-                for i in range(7):
+            for j in range(pic.shape[0]):
+                for i in range(pic.shape[1]):
                     if 0 <= x + i < 18 and 0 <= y + j < 14:
                         p = pic[j, i].astype(np.float64)
                         want[y + j, x + i] = p + want[y + j, x + i] * (1 - p[3])
