@@ -1182,6 +1182,7 @@ class RendererSplinefig(RendererBase):
 
 #: zlib's level for the PNG files print_png writes itself (1: fastest; 9: smallest).
 PNG_LEVEL = 1
+_IDAT_MAX = 1 << 30  # bytes of compressed data in one IDAT chunk
 
 
 def _png(rgba: np.ndarray, dpi: float, metadata: Optional[dict], level: int = PNG_LEVEL) -> bytes:
@@ -1214,8 +1215,11 @@ def _png(rgba: np.ndarray, dpi: float, metadata: Optional[dict], level: int = PN
     ppm = int(dpi / 0.0254 + 0.5)  # pixels per metre, rounded as Pillow rounds them
     parts = [b"\x89PNG\r\n\x1a\n", chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))]
     parts += [chunk(c[0], c[1]) for c in info.chunks]
-    parts += [chunk(b"pHYs", struct.pack(">IIB", ppm, ppm, 1)), chunk(b"IDAT", zlib.compress(filtered.tobytes(), level)),
-              chunk(b"IEND", b"")]
+    parts.append(chunk(b"pHYs", struct.pack(">IIB", ppm, ppm, 1)))
+    data = zlib.compress(filtered.tobytes(), level)
+    # A chunk's length is 31 bits: a larger stream goes into consecutive IDAT chunks.
+    parts += [chunk(b"IDAT", data[i:i + _IDAT_MAX]) for i in range(0, len(data), _IDAT_MAX)]
+    parts.append(chunk(b"IEND", b""))
     return b"".join(parts)
 
 

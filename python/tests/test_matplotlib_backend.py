@@ -543,12 +543,13 @@ def test_side_by_side_pixels_match_the_exact_oracle():
             assert np.abs(agg[row, col] - want).max() > 48, (name, col, row, want, agg[row, col])
 
 
-def test_png_writer_against_pillow_and_openimageio(tmp_path):
+def test_png_writer_against_pillow_and_openimageio(tmp_path, monkeypatch):
     """The backend writes its PNGs itself (Up filter, zlib level 1): read back by Pillow and by
     OpenImageIO, every file gives the canvas's pixels, and the metadata and resolution Pillow
     reads are those of the same figure written through matplotlib's PIL writer (pil_kwargs).
-    (Seen failing with the rows left unfiltered under the Up filter's byte, and with the dpi
-    chunk left out.)"""
+    A long stream is split into IDAT chunks. (Seen failing with the rows left unfiltered under
+    the Up filter's byte, with the dpi chunk left out, and with the stream cut at the first
+    chunk.)"""
     from splinefig.matplotlib import FigureCanvasSplinefig
 
     fig = busy()
@@ -570,6 +571,14 @@ def test_png_writer_against_pillow_and_openimageio(tmp_path):
         oiio = pytest.importorskip("OpenImageIO")
         got = oiio.ImageBuf(str(ours)).get_pixels(oiio.UINT8)
         assert (got == np.asarray(a)).all()
+    # A stream longer than one chunk may hold (2^30 bytes here, 1000 made to stand for it) goes
+    # into consecutive IDAT chunks.
+    import splinefig.matplotlib as backend
+    monkeypatch.setattr(backend, "_IDAT_MAX", 1000)
+    split = tmp_path / "split.png"
+    fig.savefig(split, backend=BACKEND)
+    data = split.read_bytes()
+    assert data.count(b"IDAT") > 3 and (np.asarray(Image.open(split)) == want).all()
     plt.close(fig)
 
 
