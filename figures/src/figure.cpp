@@ -61,9 +61,10 @@ void draw_item(const ImageItem& it, Painter& p) {
 
 // Lays one panel out in its cell and draws it: generated elements computed, the box, ranges
 // and ticks, curves sampled at the output scale, then guides under, data, guides over, legend.
-AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, double scale, Painter& p, Occupancy& occ,
-                   const Guides& g) {
-  PreparedAxes prepared = prepare_axes(spec);
+// One attempt: `require_free` as draw_legend takes it; `*crowded` set when the legend found no
+// free spot (then the panel is drawn without it, for the caller to draw again).
+AxesInfo draw_panel(PreparedAxes& prepared, const AxesSpec& spec, const Rect& cell, const Rect& canvas, double scale,
+                    Painter& p, Occupancy& occ, const Guides& g, bool require_free, bool* crowded) {
   const AxesSpec& ax = prepared.axes;
   // A text the layout measures and the renderer refuses (bad markup, too many combining
   // marks) is named as when it is drawn: FILE:LINE: axes.
@@ -87,10 +88,11 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, d
   AxesInfo info;
   std::vector<Entry> entries;
   const std::size_t first_op = p.ops().size();
-  draw_elements(prepared, panel, p, occ, info.series, entries);
+  draw_elements(prepared, panel, p, occ, info.series, entries, info.data_ink);
   const std::size_t end_op = p.ops().size();
   draw_over(ax, panel, p, g);
-  const std::optional<Rect> legend = draw_legend(ax, panel, entries, p, occ, g);
+  const std::optional<Rect> legend = draw_legend(ax, panel, entries, p, occ, g, require_free, crowded);
+  if (crowded && *crowded) return info;
   auto add_box = [&](const std::string& what, const Rect& r) {
     info.text_boxes.push_back({what, {r.left * scale, r.top * scale, r.right * scale, r.bottom * scale}});
   };
@@ -129,6 +131,35 @@ AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, d
   for (const auto& t : panel.x_ticks) info.x_ticks.push_back(t.value);
   for (const auto& t : panel.y_ticks) info.y_ticks.push_back(t.value);
   return info;
+}
+
+// Lays one panel out in its cell and draws it (draw_panel). A legend that finds no spot in the
+// box free of data goes outside it, on the right (the box narrows for it), when the panel is
+// laid out in a cell and the canvas has room; else it takes the spot that covers least.
+AxesInfo draw_axes(const AxesSpec& spec, const Rect& cell, const Rect& canvas, double scale, Painter& p, Occupancy& occ,
+                   const Guides& g) {
+  PreparedAxes prepared = prepare_axes(spec);
+  const LegendPlace asked = prepared.axes.legend;
+  const bool may_move = !prepared.axes.box && asked != LegendPlace::None && asked != LegendPlace::OutsideRight &&
+                        !legend_labels(prepared.axes).empty();
+  if (!may_move) return draw_panel(prepared, spec, cell, canvas, scale, p, occ, g, false, nullptr);
+  const std::size_t mark = p.ops().size();
+  const Occupancy before = occ;
+  bool crowded = false;
+  AxesInfo info = draw_panel(prepared, spec, cell, canvas, scale, p, occ, g, true, &crowded);
+  if (!crowded) return info;
+  p.truncate(mark);
+  occ = before;
+  prepared.axes.legend = LegendPlace::OutsideRight;
+  try {
+    return draw_panel(prepared, spec, cell, canvas, scale, p, occ, g, false, nullptr);
+  } catch (const LayoutRefused&) {
+    // No room beside the box: inside after all, where it covers least.
+  }
+  p.truncate(mark);
+  occ = before;
+  prepared.axes.legend = asked;
+  return draw_panel(prepared, spec, cell, canvas, scale, p, occ, g, false, nullptr);
 }
 
 // The whole figure into the painter's display list: the title, then the items in document

@@ -106,6 +106,11 @@ inline constexpr double kTickLabelGap = 4, kTextGap = 2;
 // a row's height and the gap between columns.
 inline constexpr double kLegendInset = 10;
 inline constexpr double kLegendPad = 8, kLegendSample = 28, kLegendGap = 8, kLegendRow = 19, kLegendColumnGap = 16;
+// A legend of `entries` asked for `columns` columns is filled column by column (down the first
+// column, then the next): its rows, and the columns that takes (fewer when the last would be
+// empty, 6 entries in 5 columns take 3 of 2 rows).
+int legend_rows(int columns, std::size_t entries);
+int legend_columns_used(int columns, std::size_t entries);
 // The legend's width and height for entries with these labels.
 std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const TextMeasure& p,
                                   const Guides& g);

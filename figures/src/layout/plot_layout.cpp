@@ -137,6 +137,16 @@ void equalize(std::array<double, 2>& xr, std::array<double, 2>& yr, double w, do
 
 }  // namespace
 
+int legend_rows(int columns, std::size_t entries) {
+  const std::size_t cols = static_cast<std::size_t>(std::max(1, columns));
+  return static_cast<int>(std::max<std::size_t>(1, (entries + cols - 1) / cols));
+}
+
+int legend_columns_used(int columns, std::size_t entries) {
+  const std::size_t rows = static_cast<std::size_t>(legend_rows(columns, entries));
+  return static_cast<int>(std::max<std::size_t>(1, (entries + rows - 1) / rows));
+}
+
 std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::string>& labels, const TextMeasure& p,
                                   const Guides& g) {
   const Font& f = g.legend_font;
@@ -149,8 +159,8 @@ std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::str
     text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - kLegendSample - kLegendGap);
     title_h = kLegendRow;
   }
-  const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(labels.size())));
-  const int rows = static_cast<int>((labels.size() + cols - 1) / cols);
+  const int cols = legend_columns_used(ax.legend_columns, labels.size());
+  const int rows = legend_rows(ax.legend_columns, labels.size());
   const double col_w = kLegendSample + kLegendGap + text_w + kLegendColumnGap;
   return {std::ceil(kLegendPad + cols * col_w - kLegendColumnGap + kLegendPad),
           std::ceil(kLegendPad + title_h + kLegendRow * rows + kLegendPad - 4)};

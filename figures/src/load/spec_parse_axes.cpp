@@ -251,6 +251,7 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
       "lower left", "lower right", "upper center", "lower center", "outside right", "outside-right"}, 0)));
   ax.legend_title = r.label("legend_title", "");
   ax.legend_columns = r.integer("legend_columns", 1, 1, 16);
+  ax.legend_order = r.strings("legend_order");
   ax.palette = r.string("palette", ax.palette);
   if (!palette_known(ax.palette)) r.fail("palette", "unknown palette \"" + ax.palette + "\" (viridis | tab10 | grey)");
   ax.dash_cycle = r.boolean("dash_cycle", ax.dash_cycle);

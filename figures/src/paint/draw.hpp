@@ -54,12 +54,15 @@ struct Entry {
 void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
 // Draws the elements; returns the series for index.json and the legend entries.
 void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occupancy& occ,
-                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend);
+                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend, std::vector<AxesInfo::DataInk>& ink);
 // Frame, ticks, tick labels, axis labels, title (over the data), then the legend.
 void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
 // Returns the legend's rectangle (none when nothing is drawn).
+// The legend goes where it covers no data inside the box; when no spot is free and
+// `require_free`, nothing is drawn and `*crowded` is set (the caller then puts it outside);
+// otherwise the spot that covers least. Entries in the axes' legend_order, filled down columns.
 std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
-                                Occupancy& occ, const Guides& g);
+                                Occupancy& occ, const Guides& g, bool require_free = false, bool* crowded = nullptr);
 
 // Places text next to one of the candidate points (pixels, best first) where it covers the
 // least drawn data and stays inside `box`; marks the chosen spot as used and returns the

@@ -72,6 +72,10 @@ class Painter : public TextMeasure {
   void image(Raster r, double x0, double y0, double x1, double y1);
 
   const std::vector<Op>& ops() const { return ops_; }
+  // Drops the ops from `n` on (a panel drawn again).
+  void truncate(std::size_t n) {
+    if (n < ops_.size()) ops_.resize(n), op_origin_.resize(n);
+  }
 
   // "FILE:LINE: KEY" of the spec table whose drawing follows; every op records it, so that an
   // error found when the op is painted names that table.

@@ -75,7 +75,7 @@ void stroke_clipped(Painter& p, render::Path path, const render::StrokeStyle& st
 class ElementPainter {
  public:
   ElementPainter(const AxesSpec& ax, const Panel& panel, Painter& p, Occupancy& occ, std::vector<SeriesInfo>& series,
-                 std::vector<Entry>& legend)
+                 std::vector<Entry>& legend, std::vector<AxesInfo::DataInk>& ink)
       : map(panel.map),
         box(panel.box),
         clip(panel.box.inflated(0.5)),
@@ -86,7 +86,8 @@ class ElementPainter {
         dash_cycle_(ax.dash_cycle),
         family_(static_cast<int>(std::count_if(ax.elements.begin(), ax.elements.end(), needs_palette))),
         series_(series),
-        legend_(legend) {}
+        legend_(legend),
+        ink_(ink) {}
 
   const PixelMap& map;
   const Rect box, clip;
@@ -131,7 +132,22 @@ class ElementPainter {
 
   void stroke(const std::vector<Vec2>& pts, bool closed, const render::StrokeStyle& st, Color c) {
     stroke_clipped(p, pts, closed, st, c, clip);
-    occ.mark_polyline(pts, 0.5 * st.width + 1);
+    mark_polyline(pts, closed, 0.5 * st.width);
+  }
+  // The data's ink: into the occupancy grid a pixel wider, and into the panel's data_ink.
+  void mark_polyline(const std::vector<Vec2>& pts, bool closed, double half_width) {
+    if (closed && pts.size() > 2) {
+      std::vector<Vec2> loop = pts;
+      loop.push_back(pts[0]);
+      return mark_polyline(loop, false, half_width);
+    }
+    occ.mark_polyline(pts, half_width + 1);
+    AxesInfo::DataInk ink;
+    const double s = p.scale();
+    ink.points.reserve(pts.size());
+    for (Vec2 q : pts) ink.points.push_back({q.x * s, q.y * s});
+    ink.radius = half_width * s;
+    ink_.push_back(std::move(ink));
   }
   // The exact path clipped to the box, else (no exact path) the polyline `pts` of the same curve.
   void stroke(const std::optional<render::Path>& path, const std::vector<Vec2>& pts, bool closed,
@@ -140,13 +156,14 @@ class ElementPainter {
     render::Path closed_path = *path;
     if (closed) closed_path.close();
     stroke_clipped(p, std::move(closed_path), st, c, clip);
-    occ.mark_polyline(pts, 0.5 * st.width + 1);
+    mark_polyline(pts, closed, 0.5 * st.width);
   }
   // A marker inside the clip box, marked as used.
   void mark(render::Marker shape, Vec2 q, double size, Color c) {
     if (!clip.contains(q)) return;
     p.marker(shape, q, size, c);
     occ.mark_point(q, 0.5 * size + 1);
+    ink_.push_back({{{q.x * p.scale(), q.y * p.scale()}}, 0.5 * size * p.scale()});
   }
 
   // The inline labels, after every element is drawn (so they avoid all the data).
@@ -179,6 +196,7 @@ class ElementPainter {
   int family_, next_ = 0;
   std::vector<SeriesInfo>& series_;
   std::vector<Entry>& legend_;
+  std::vector<AxesInfo::DataInk>& ink_;
   std::vector<InlineLabel> inline_;
 };
 
@@ -256,7 +274,7 @@ void draw_kernel(const KernelElement& k, ElementPainter& d) {
       else stroke_clipped(d.p, pieces[i], false, k.stroke, k.piece_colors[i], d.clip);
     }
   }
-  d.occ.mark_polyline(all, 0.5 * k.stroke.width + 1);
+  d.mark_polyline(all, false, 0.5 * k.stroke.width);
   if (k.show_knots)
     for (double s = std::ceil(s0); s <= s1; s += 1) d.mark(render::Marker::Circle, d.map({s, k.scale * kernel(k.basis, s)}), k.knot_size, kDark);
   for (size_t i = 0; i < k.piece_labels.size() && i < pieces.size(); ++i) {
@@ -385,9 +403,9 @@ void draw_image_element(const ImageElement& im, ElementPainter& d) {
 }  // namespace
 
 void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p, Occupancy& occ,
-                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend) {
+                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend, std::vector<AxesInfo::DataInk>& ink) {
   const AxesSpec& ax = prepared.axes;
-  ElementPainter d(ax, panel, p, occ, series, legend);
+  ElementPainter d(ax, panel, p, occ, series, legend, ink);
   for (size_t i = 0; i < ax.elements.size(); ++i) {
     const SpecLocation origin = i < ax.element_origins.size() ? ax.element_origins[i] : ax.where.with_key("axes");
     p.set_origin(origin);

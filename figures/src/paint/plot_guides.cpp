@@ -121,9 +121,19 @@ constexpr double kPad = kLegendPad, kSample = kLegendSample, kGap = kLegendGap, 
                  kColumnGap = kLegendColumnGap;
 }  // namespace
 
-std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
-                                Occupancy& occ, const Guides& g) {
-  if (entries.empty() || ax.legend == LegendPlace::None) return std::nullopt;
+std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& drawn, Painter& p,
+                                Occupancy& occ, const Guides& g, bool require_free, bool* crowded) {
+  if (drawn.empty() || ax.legend == LegendPlace::None) return std::nullopt;
+  // The entries in legend_order, the rest after them as drawn.
+  std::vector<Entry> entries;
+  for (const std::string& label : ax.legend_order) {
+    const auto it = std::find_if(drawn.begin(), drawn.end(), [&](const Entry& e) { return e.label == label; });
+    if (it == drawn.end())
+      throw SpecFileError(ax.where.with_key("axes.legend_order"), "\"" + label + "\" is no label in the legend");
+    if (std::none_of(entries.begin(), entries.end(), [&](const Entry& e) { return e.label == label; })) entries.push_back(*it);
+  }
+  for (const Entry& e : drawn)
+    if (std::none_of(entries.begin(), entries.end(), [&](const Entry& x) { return x.label == e.label; })) entries.push_back(e);
   const Font& f = g.legend_font;
   const double pad = kPad, sample = kSample, gap = kGap, row = kRow;
   Font tf = f;
@@ -134,7 +144,7 @@ std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const st
   double text_w = 0;
   for (const auto& e : entries) text_w = std::max(text_w, p.measure(e.label, f).width);
   if (!ax.legend_title.empty()) text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - sample - gap);
-  const int cols = std::max(1, std::min(ax.legend_columns, static_cast<int>(entries.size())));
+  const int rows = legend_rows(ax.legend_columns, entries.size());
   const double col_w = sample + gap + text_w + kColumnGap;
   const Rect& b = panel.box;
   const double inset = kLegendInset;
@@ -144,22 +154,29 @@ std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const st
   };
   const double xl = b.left + inset, xr = b.right - inset - w, xc = std::round(0.5 * (b.left + b.right - w));
   const double yt = b.top + inset, yb = b.bottom - inset - h, yc = std::round(0.5 * (b.top + b.bottom - h));
-  const std::vector<Spot> spots = {{LegendPlace::UpperRight, xr, yt}, {LegendPlace::UpperLeft, xl, yt},
-                                   {LegendPlace::LowerRight, xr, yb}, {LegendPlace::LowerLeft, xl, yb},
-                                   {LegendPlace::UpperCenter, xc, yt}, {LegendPlace::LowerCenter, xc, yb},
-                                   {LegendPlace::Auto, xr, yc},        {LegendPlace::Auto, xl, yc},
-                                   {LegendPlace::OutsideRight, b.right + kLegendOutsideGap, b.top}};
-  Spot chosen = spots[0];
-  if (ax.legend == LegendPlace::Auto) {
+  // Inside the box, in the order of preference (a place the spec names first); the legend goes
+  // to the first spot that covers no data (none of the occupancy grid's cells: the data's
+  // strokes widened by a pixel, its markers, the inline labels), as matplotlib's "best" does.
+  std::vector<Spot> spots = {{LegendPlace::UpperRight, xr, yt}, {LegendPlace::UpperLeft, xl, yt},
+                             {LegendPlace::LowerRight, xr, yb}, {LegendPlace::LowerLeft, xl, yb},
+                             {LegendPlace::UpperCenter, xc, yt}, {LegendPlace::LowerCenter, xc, yb},
+                             {LegendPlace::Auto, xr, yc},        {LegendPlace::Auto, xl, yc}};
+  if (ax.legend != LegendPlace::Auto && ax.legend != LegendPlace::OutsideRight)
+    std::stable_partition(spots.begin(), spots.end(), [&](const Spot& s) { return s.place == ax.legend; });
+  Spot chosen{LegendPlace::OutsideRight, b.right + kLegendOutsideGap, b.top};
+  if (ax.legend != LegendPlace::OutsideRight) {
     long best = -1;
     for (const auto& s : spots) {
-      if (s.place == LegendPlace::OutsideRight) continue;
-      long n = occ.count(Rect{s.x, s.y, s.x + w, s.y + h}.inflated(3));
+      const long n = occ.count(Rect{std::round(s.x), std::round(s.y), std::round(s.x) + w, std::round(s.y) + h}.inflated(1));
       if (best < 0 || n < best) best = n, chosen = s;
+      if (n == 0) break;
     }
-  } else {
-    for (const auto& s : spots)
-      if (s.place == ax.legend) chosen = s;
+    // Every spot inside covers data: the caller lays the panel out again with the legend
+    // outside the box, when it may.
+    if (best > 0 && require_free) {
+      if (crowded) *crowded = true;
+      return std::nullopt;
+    }
   }
   double x = std::round(chosen.x), y = std::round(chosen.y);
   occ.mark_rect({x, y, x + w, y + h});
@@ -174,7 +191,7 @@ std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const st
   }
   for (size_t i = 0; i < entries.size(); ++i) {
     const Entry& e = entries[i];
-    const int r = static_cast<int>(i) / cols, c = static_cast<int>(i) % cols;
+    const int r = static_cast<int>(i) % rows, c = static_cast<int>(i) / rows;  // down each column
     double my = cy + row * r + 0.5 * row - 2;
     double sx0 = x + pad + c * col_w, sx1 = sx0 + sample;
     if (e.patch) {

@@ -40,6 +40,15 @@ struct AxesInfo {
   // labels, [[axes.text]], annotations); the layout keeps the guides' and the legend apart
   // and inside the canvas.
   std::vector<TextBox> text_boxes;
+  // The data as drawn, for checks (not written to index.json): each stroked polyline of the
+  // elements (a curve as sampled for drawing) and each marker as one point, in output pixels,
+  // with the distance from them that its ink reaches (half the stroke's width, half the
+  // marker's size).
+  struct DataInk {
+    std::vector<std::array<double, 2>> points;
+    double radius = 0;
+  };
+  std::vector<DataInk> data_ink;
 
   AxisMap x_map() const;  // data -> output pixels, as docs/conventions.md states
   AxisMap y_map() const;

@@ -398,6 +398,9 @@ struct AxesSpec {
   LegendPlace legend = LegendPlace::Auto;
   std::string legend_title;
   int legend_columns = 1;
+  // The legend's entries by label, first to last (the order a parameter runs); entries it does
+  // not name follow in drawing order.
+  std::vector<std::string> legend_order;
   std::string palette = "viridis";
   bool dash_cycle = true;  // elements coloured from the palette also take the cycle's dashes
   std::optional<std::array<int, 2>> cell;       // [row, col] in the figure's layout grid
