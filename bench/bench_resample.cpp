@@ -10,7 +10,7 @@
 
 #include <splinefig/base/parallel.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>

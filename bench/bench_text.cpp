@@ -7,7 +7,7 @@
 //   text/empty-canvas      text/scene without the labels (clearing and returning the canvas)
 //   text/cairo/<size>      the same labels with cairo_show_text (DejaVu Sans, antialiased)
 // Counter glyphs_per_s: drawn glyphs per second of wall time.
-#include <splinefig/renderer/text.hpp>
+#include <splinefig/renderer/text_outlines.hpp>
 
 #include <benchmark/benchmark.h>
 #include <cairo.h>

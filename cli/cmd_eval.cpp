@@ -1,6 +1,8 @@
 // `splinefig eval`: knots (CSV from a file or stdin) -> points on the curve on stdout (docs/cli.md).
 #include "command.hpp"
-#include "csv.hpp"
+#include "number_flags.hpp"
+#include "points_io.hpp"
+#include "stdio.hpp"
 
 #include <splinefig/spline/arclength.hpp>
 #include <splinefig/spline/basis.hpp>

@@ -1,7 +1,9 @@
 // splinefig interp: the cubic spline through data points S_0..S_n (seed 003 §5, §9).
 // Reads the data (a file or stdin); writes the curve, its B-spline control points or its Bezier pieces.
 #include "command.hpp"
-#include "csv.hpp"
+#include "number_flags.hpp"
+#include "points_io.hpp"
+#include "stdio.hpp"
 
 #include <splinefig/spline/interp.hpp>
 

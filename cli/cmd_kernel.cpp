@@ -1,10 +1,12 @@
 // `splinefig kernel`: a kernel k(x) (a basis function, box, tent, lanczos3) as x,k(x) lines,
 // its frequency response, or its filter analysis (kernel/analysis.hpp).
 #include "command.hpp"
-#include "csv.hpp"
+#include "number_flags.hpp"
+#include "points_io.hpp"
+#include "stdio.hpp"
 
 #include <splinefig/kernel/analysis.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <cmath>
 #include <string>

@@ -1,12 +1,12 @@
 // `splinefig resample`: resize an image with a spline basis function as the reconstruction
 // filter (docs/cli.md, docs/resample.md).
 #include "command.hpp"
-#include "csv.hpp"
+#include "number_flags.hpp"
 #include "stdio.hpp"
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,6 @@
 // would be; an output for stdout is written whole into the scratch directory first and only
 // then copied to stdout, so that a failure leaves stdout empty (as far as a pipe allows).
 #include "command.hpp"
-#include "csv.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -19,6 +18,11 @@
 namespace splinefig::cli {
 
 inline bool is_stdio(const std::string& path) { return path == "-"; }
+
+// Writes text to stdout and flushes; throws Failure if the write fails (disk full, closed pipe).
+// Commands build their output in memory and write it at once, so a failed command prints
+// nothing on stdout.
+void write_stdout(std::string_view text);
 
 // A directory of its own under TMPDIR (or /tmp), removed with everything in it when it goes.
 // A failure to hold stdin or stdout in it is an unwritable error (exit 2, diff's 4).

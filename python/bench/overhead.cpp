@@ -7,7 +7,7 @@
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/curve.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <algorithm>
 #include <chrono>

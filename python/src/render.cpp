@@ -8,7 +8,7 @@
 #include <splinefig/image/srgb.hpp>
 #include <splinefig/renderer/path.hpp>
 #include <splinefig/renderer/renderer.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <pybind11/stl.h>
 

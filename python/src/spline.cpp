@@ -9,7 +9,7 @@
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/spline/curve.hpp>
 #include <splinefig/spline/interp.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>

@@ -5,7 +5,7 @@
 
 #include <splinefig/base/huge_pages.hpp>
 
-#include <splinefig/renderer/text.hpp>
+#include <splinefig/renderer/text_outlines.hpp>
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
 // The memo's basis matrices, its spec syntax, and the basis functions.
 #include <splinefig/spline/basis.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 #include <splinefig/spline/near_miss.hpp>
 #include <splinefig/spline/points_csv.hpp>
 

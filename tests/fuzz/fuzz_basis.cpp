@@ -2,7 +2,7 @@
 // ...), then the basis evaluated across its support. Any input must give a basis with finite
 // values or one SpecError; anything else is a finding.
 #include <splinefig/spline/basis.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // libFuzzer harness: the CSV point reader of every subcommand (cli/csv.hpp), and the writer on
 // what it read. Any input must give points that write and read back exactly, or one Failure
 // line; anything else is a finding.
-#include "csv.hpp"
+#include "points_io.hpp"
 
 #include <cstdint>
 #include <cstdio>

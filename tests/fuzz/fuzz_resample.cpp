@@ -6,7 +6,7 @@
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <cmath>
 #include <cstdio>

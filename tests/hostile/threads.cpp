@@ -3,7 +3,7 @@
 #include <splinefig/base/limits.hpp>
 #include <splinefig/base/parallel.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <catch2/catch.hpp>
 

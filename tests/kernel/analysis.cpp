@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <splinefig/kernel/analysis.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <cmath>
 #include <numbers>

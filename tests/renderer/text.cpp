@@ -2,9 +2,9 @@
 // reading of the same font files), not against the renderer's own path code.
 #include "coverage_helpers.hpp"
 
-#include "renderer/src/text.hpp"
+#include "renderer/src/text_layout.hpp"
 
-#include <splinefig/renderer/text.hpp>
+#include <splinefig/renderer/text_outlines.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <cmath>
 #include <numbers>

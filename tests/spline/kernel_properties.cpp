@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <splinefig/spline/basis.hpp>
 #include <splinefig/kernel/analysis.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <cmath>
 #include <cstdlib>

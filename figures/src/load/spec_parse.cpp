@@ -6,7 +6,7 @@
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/renderer/renderer.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 #include <splinefig/spline/points_csv.hpp>
 
 #include <algorithm>

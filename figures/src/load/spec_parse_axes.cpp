@@ -100,7 +100,7 @@ CurveElement parse_curve(TableReader& r) {
   return c;
 }
 
-KernelElement parse_kernel(TableReader& r) {
+KernelElement parse_kernel_element(TableReader& r) {
   KernelElement k;
   k.basis_spec = r.string("basis", "");
   if (k.basis_spec.empty()) r.fail("basis", "a kernel needs basis = \"SPEC\"");
@@ -277,7 +277,7 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
     });
   };
   each("curve", parse_curve);
-  each("kernel", parse_kernel);
+  each("kernel", parse_kernel_element);
   each("series", [](TableReader& s) { return parse_series(s, LookDefault::Curve, "a series"); });
   each("polygon", [](TableReader& s) { return parse_series(s, LookDefault::Polygon, "a control polygon"); });
   each("markers", [](TableReader& s) { return parse_series(s, LookDefault::Points, "markers"); });

@@ -4,7 +4,7 @@
 
 #include <splinefig/base/limits.hpp>
 #include <splinefig/resample/resample.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <algorithm>
 #include <cmath>

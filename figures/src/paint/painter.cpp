@@ -5,7 +5,7 @@
 
 #include <splinefig/image/io.hpp>
 #include <splinefig/image/srgb.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 
 #include <algorithm>
 #include <numbers>

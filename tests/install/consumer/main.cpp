@@ -10,7 +10,7 @@
 #include <splinefig/renderer/renderer.hpp>
 #include <splinefig/resample/resample.hpp>
 #include <splinefig/spline/basis.hpp>
-#include <splinefig/spline/kernel.hpp>
+#include <splinefig/spline/basis_kernel.hpp>
 #include <splinefig/version.hpp>
 
 #include <cmath>

@@ -4,8 +4,8 @@
 //
 // Mostly a piecewise polynomial on unit intervals: piece p covers [lo + p, lo + p + 1) and holds
 // its coefficients in ascending powers of the local variable u = s - (lo + p) in [0, 1). Every
-// spline basis function is one (spline/kernel.hpp converts a basis matrix exactly), and so are
-// the box and the tent. A few comparison filters that are not polynomials (lanczos3) sit
+// spline basis function is one (spline/basis_kernel.hpp converts a basis matrix exactly), and so
+// are the box and the tent. A few comparison filters that are not polynomials (lanczos3) sit
 // behind the same interface: they are even functions with a stated continuity class, and
 // pieces() is empty for them.
 //

@@ -79,8 +79,8 @@ struct StrokeStyle {
 };
 
 // The pixel filter is a separable k(x) k(y) with k a piecewise-polynomial Kernel
-// (kernel/kernel.hpp; a spline basis function through spline/kernel.hpp). The box (the default)
-// is exact area coverage; otherwise a pixel's value is the shape convolved with k(x) k(y) at
+// (kernel/kernel.hpp; a spline basis function through spline/basis_kernel.hpp). The box (the
+// default) is exact area coverage; otherwise a pixel's value is the shape convolved with k(x) k(y) at
 // the pixel centre, divided by (integral of k)^2, computed exactly (see docs/renderer.md).
 // Throws std::invalid_argument if `k` is not a usable pixel filter (not a polynomial, more than
 // 8 pieces or coefficients per piece, a zero integral).
@@ -90,8 +90,9 @@ enum class Marker { Circle, Square, Diamond, Cross, Plus };
 enum class HAlign { Left, Center, Right };
 enum class VAlign { Baseline, Middle, Top, Bottom };
 
-// Text is UTF-8, set in a DejaVu face (text.hpp: the faces, their lookup and fallback), shaped
-// by HarfBuzz and drawn as glyph outlines by the same exact-area rasterizer as every shape.
+// Text is UTF-8, set in a DejaVu face (text_outlines.hpp: the faces, their lookup and
+// fallback), shaped by HarfBuzz and drawn as glyph outlines by the same exact-area rasterizer as
+// every shape.
 enum class FontFamily { Sans, Serif, Mono };
 enum class FontWeight { Normal, Bold };
 

@@ -60,8 +60,8 @@ std::string known_bases();
 // For degree n, the piece between knots i and i+1 uses x[i-h] .. x[i-h+n] with
 // h = (n-1)/2 (integer division; h = 1 for the cubic, as in the memo), so odd degrees give
 // centred kernels; column c is the piece on [h-c, h-c+1) and the support is [h-n, h+1].
-// A convenience for basis_kernel(b)(s) (spline/kernel.hpp): for many values, make the Kernel
-// once.
+// A convenience for basis_kernel(b)(s) (spline/basis_kernel.hpp): for many values, make the
+// Kernel once.
 double kernel(const Basis& b, double s);
 
 // Support [lo, hi] of the kernel (for a cubic: [-2, 2]).

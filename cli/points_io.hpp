@@ -1,19 +1,18 @@
 #pragma once
-// CSV in and out for every subcommand (docs/conventions.md; the reading rules are
-// spline/points_csv.hpp's). Numbers are written as the shortest decimal
+// Points in and out as CSV for eval, interp and kernel (docs/conventions.md; the reading rules
+// are spline/points_csv.hpp's). Numbers are written as the shortest decimal
 // that reads back to the same double (std::to_chars), so output round-trips exactly.
 //
 // Errors are splinefig::cli::Failure with one line naming the source, line and field, e.g.
 //   "stdin line 7, field 2: 'abc' is not a number".
-// Output is built in memory and written at once by write_stdout, so a failed command prints
-// nothing on stdout.
+// Output is built in memory and written at once by write_stdout (stdio.hpp), so a failed
+// command prints nothing on stdout.
 #include "command.hpp"
 
 #include <splinefig/spline/points.hpp>
 #include <splinefig/spline/points_csv.hpp>
 
 #include <istream>
-#include <sstream>
 #include <span>
 #include <string>
 #include <string_view>
@@ -32,20 +31,9 @@ Points read_input(const std::string& path, const CsvOptions& options);
 std::string input_name(const std::string& path);
 // --delimiter: comma (default), semicolon, tab, space (runs of blanks).
 CsvOptions csv_options(const std::string& delimiter);
-// All of stdin in large reads (std::cin synchronized with stdio reads a character at a time);
-// a NUL byte stops the read at once (the input is not text).
-std::istringstream slurp_stdin();
 // The optional input file argument (none or "-": stdin) and --delimiter, as eval, interp and
 // kernel take them; `what` says what the points are.
 void add_input(CLI::App& app, std::string& input, std::string& delimiter, const std::string& what);
-
-// One finite number from text (a flag value, a CSV field); `what` names it in the error,
-// e.g. "--from". Leading '+' and surrounding blanks are accepted.
-double parse_number(std::string_view text, std::string_view what);
-// A whole number in [lo, hi].
-long long parse_integer(std::string_view text, std::string_view what, long long lo, long long hi);
-// Comma-separated finite numbers ("-1.5,2"), as for vector-valued flags.
-std::vector<double> parse_vector(std::string_view text, std::string_view what);
 
 // Shortest round-trip decimal of v.
 void append_number(std::string& out, double v);
@@ -62,8 +50,5 @@ std::string format_points(const Points& p, std::size_t& non_finite);
 // Every command checks its numbers with it before writing: a non-finite result is an error
 // naming the input that caused it, never printed.
 std::size_t first_non_finite(std::span<const double> v);
-
-// Writes text to stdout and flushes; throws Failure if the write fails (disk full, closed pipe).
-void write_stdout(std::string_view text);
 
 }  // namespace splinefig::cli

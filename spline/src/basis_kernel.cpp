@@ -1,5 +1,5 @@
-// Basis functions as kernels, exactly from the matrix columns; the kernel spec parser.
-#include <splinefig/spline/kernel.hpp>
+// Basis functions as kernels, exactly from the matrix columns; the filter spec parser.
+#include <splinefig/spline/basis_kernel.hpp>
 #include <splinefig/spline/near_miss.hpp>
 #include <splinefig/spline/points_csv.hpp>
 

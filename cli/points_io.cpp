@@ -1,5 +1,5 @@
-// CSV points in and out, and the number parsing every flag shares (see csv.hpp).
-#include "csv.hpp"
+// CSV points in and out (see points_io.hpp).
+#include "points_io.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,66 +10,31 @@
 #include <iostream>
 #include <cstring>
 #include <fstream>
-#include <limits>
 #include <sstream>
 
 namespace splinefig::cli {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
-  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
-  return s;
+// All of stdin in large reads (std::cin synchronized with stdio reads a character at a time);
+// a NUL byte stops the read at once (the input is not text).
+std::istringstream slurp_stdin() {
+  std::string text;
+  char buf[1 << 16];
+  std::size_t got;
+  while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
+    // Not text (/dev/zero, a binary file): stop at once, before reading it all.
+    if (const void* nul = std::memchr(buf, 0, got)) {
+      text.append(static_cast<const char*>(buf), static_cast<const char*>(nul));
+      const auto line = std::count(text.begin(), text.end(), '\n') + 1;
+      throw Failure("stdin line " + std::to_string(line) + ": a NUL byte: the input is not text");
+    }
+    text.append(buf, got);
+  }
+  if (std::ferror(stdin)) throw Failure("cannot read stdin");
+  return std::istringstream(std::move(text));
 }
-
-// Quotes text for an error message, cut short, with control and non-ASCII bytes as \xNN.
-std::string quoted(std::string_view s) {
-  return "'" + printable(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
-}
-
-bool to_double(std::string_view text, double& v, std::string& why) { return parse_csv_number(text, v, why); }
 
 }  // namespace
-
-double parse_number(std::string_view text, std::string_view what) {
-  double v = 0;
-  std::string why;
-  if (!to_double(text, v, why)) throw Failure(std::string(what) + ": value " + why);
-  return v;
-}
-
-long long parse_integer(std::string_view text, std::string_view what, long long lo, long long hi) {
-  const std::string_view t = trim(text);
-  long long v = 0;
-  const char* first = t.data();
-  const char* last = t.data() + t.size();
-  if (!t.empty() && *first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, v);
-  if (t.empty() || ec == std::errc::invalid_argument || ptr != last || first == last)
-    throw Failure(std::string(what) + ": " + quoted(t) + " is not a whole number");
-  if (ec == std::errc::result_out_of_range || v < lo || v > hi)
-    throw Failure(std::string(what) + ": " + std::string(t) + " is out of range (" + std::to_string(lo) +
-                  ".." + std::to_string(hi) + ")");
-  return v;
-}
-
-std::vector<double> parse_vector(std::string_view text, std::string_view what) {
-  std::vector<double> out;
-  size_t field = 1;
-  while (true) {
-    const auto comma = text.find(',');
-    double v = 0;
-    std::string why;
-    if (!to_double(text.substr(0, comma), v, why))
-      throw Failure(std::string(what) + ": component " + std::to_string(field) + " " + why);
-    out.push_back(v);
-    if (comma == std::string_view::npos) break;
-    text.remove_prefix(comma + 1);
-    ++field;
-  }
-  return out;
-}
 
 Points read_points(std::istream& in, std::string_view source, const CsvOptions& options) {
   try {
@@ -109,23 +74,6 @@ void add_input(CLI::App& app, std::string& input, std::string& delimiter, const 
               ->type_name("NAME")
               ->capture_default_str(),
           {"comma", "semicolon", "tab", "space"});
-}
-
-std::istringstream slurp_stdin() {
-  std::string text;
-  char buf[1 << 16];
-  std::size_t got;
-  while ((got = std::fread(buf, 1, sizeof buf, stdin)) > 0) {
-    // Not text (/dev/zero, a binary file): stop at once, before reading it all.
-    if (const void* nul = std::memchr(buf, 0, got)) {
-      text.append(static_cast<const char*>(buf), static_cast<const char*>(nul));
-      const auto line = std::count(text.begin(), text.end(), '\n') + 1;
-      throw Failure("stdin line " + std::to_string(line) + ": a NUL byte: the input is not text");
-    }
-    text.append(buf, got);
-  }
-  if (std::ferror(stdin)) throw Failure("cannot read stdin");
-  return std::istringstream(std::move(text));
 }
 
 void append_number(std::string& out, double v) {
@@ -174,11 +122,6 @@ std::size_t first_non_finite(std::span<const double> v) {
   std::size_t i = 0;
   while (i < v.size() && std::isfinite(v[i])) ++i;
   return i;
-}
-
-void write_stdout(std::string_view text) {
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0)
-    throw Failure(std::string("cannot write to standard output (") + std::strerror(errno ? errno : EIO) + ")", ErrorKind::unwritable);
 }
 
 }  // namespace splinefig::cli

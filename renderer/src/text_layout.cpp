@@ -1,5 +1,5 @@
 // Text: UTF-8 decoding, DejaVu face lookup and fallback, HarfBuzz shaping and FreeType glyph
-// outlines (see splinefig/renderer/text.hpp).
+// outlines (see splinefig/renderer/text_outlines.hpp).
 //
 // Everything is done in font units and scaled afterwards, so one outline and one shaping of a
 // string serve every size. HarfBuzz shapes with its own OpenType tables, unhinted (advances and
@@ -7,9 +7,9 @@
 // unhinted (FT_LOAD_NO_SCALE). The caches hold font-unit data only and are guarded by one
 // mutex: FreeType faces are not thread-safe, and layouts are cheap once their strings are
 // cached.
-#include "text.hpp"
+#include "text_layout.hpp"
 
-#include <splinefig/renderer/text.hpp>
+#include <splinefig/renderer/text_outlines.hpp>
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
