@@ -72,4 +72,28 @@ void arc_interior(Vec2 c, double r, double a0, double sweep, const Box& near, Em
   }
 }
 
+// An upper bound on the vertices arc_interior(c, r, a0, sweep, near, ...) emits, computed
+// without emitting them. Every step is at least `fine`, so ceil(|sweep| / fine) always holds;
+// near the canvas that is the count. Otherwise (a disk far from `near`, or r >= 1e6) a step
+// from a point at distance d from `near` is at least 0.5 d / r of angle: nearer than
+// delta = 2 r fine the step is `fine`, and the arc within distance D of the box (a convex set)
+// is at most its perimeter long, perim + 2 pi D; counting the steps from each band of
+// distance [2^k delta, 2^(k+1) delta) gives the second bound, a few thousand steps for any
+// radius.
+inline double arc_vertex_bound(Vec2 c, double r, double sweep, const Box& near) {
+  if (!(r > 0) || sweep == 0) return 0;
+  const double total = std::abs(sweep), fine = fine_arc_step(r);
+  if (total <= fine) return 0;
+  const double uniform = std::ceil(total / fine);
+  const double dc = near.distance(c);
+  if (dc <= r + 1.0 && r < 1e6) return uniform;
+  double bound = uniform;
+  if (dc > r) bound = std::min(bound, total / std::max(fine, 0.5 * (dc - r) / r) + 2);
+  const double delta = 2 * r * fine;
+  const double perim = 2 * ((near.x1 - near.x0) + (near.y1 - near.y0));
+  const double levels = std::ceil(std::log2(std::max(2.0, (dc + r + 1) / delta))) + 1;
+  return std::min(bound, (perim + 4 * std::numbers::pi * delta) / (r * fine) + 4 * perim / delta +
+                             (8 * std::numbers::pi + 2) * levels + 2);
+}
+
 }  // namespace splinefig::render::detail

@@ -55,6 +55,28 @@ int cubic_pieces(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, double tol) {
 }
 }  // namespace
 
+std::size_t Path::flattened_size(double tolerance) const {
+  if (!(tolerance > 0)) throw std::invalid_argument("Path::flattened_size: tolerance must be positive");
+  std::size_t n = 0, k = 0;
+  Vec2 cur{};
+  for (Verb v : verbs_) {
+    switch (v) {
+      case Verb::Move:
+      case Verb::Line:
+        cur = points_[k++];
+        ++n;
+        break;
+      case Verb::Cubic:
+        n += static_cast<std::size_t>(cubic_pieces(cur, points_[k], points_[k + 1], points_[k + 2], tolerance));
+        cur = points_[k + 2];
+        k += 3;
+        break;
+      case Verb::Close: break;
+    }
+  }
+  return n;
+}
+
 Path::Flat Path::flatten(double tolerance) const {
   if (!(tolerance > 0)) throw std::invalid_argument("Path::flatten: tolerance must be positive");
   Flat out;

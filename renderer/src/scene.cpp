@@ -8,6 +8,7 @@
 #include <splinefig/renderer/text_outlines.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -66,7 +67,32 @@ void check_style(const StrokeStyle& s, const char* call) {
   check_finite(s.dash_offset, call, "dash offset");  // the pattern itself is valid by construction
 }
 
+// The box outline estimates are taken against: the canvas and more than any pixel filter's
+// margin (the rasterizer clips to the canvas, or the filter grid's box around it).
+detail::Box outline_box(int w, int h) { return {-16, -16, w + 16.0, h + 16.0}; }
+
 }  // namespace
+
+void Scene::count_outline(double vertices, const char* call) {
+  if (clip_) vertices += clip_vertices_;
+  const double total = outline_vertices_ + vertices;
+  char buf[300];
+  if (vertices > kMaxOutlineVertices) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: its outline would have about %.3g vertices (joins, caps, dashes and arcs, estimated before "
+                  "it is built), over the limit of 2^26 (about 1.3 GB)",
+                  call, vertices);
+    bad(buf);
+  }
+  if (total > kMaxOutlineVertices) {
+    std::snprintf(buf, sizeof buf,
+                  "%s: the scene's outlines would have about %.3g vertices with this item's %.3g (estimated before "
+                  "they are built), over the limit of 2^26 (about 1.3 GB)",
+                  call, total, vertices);
+    bad(buf);
+  }
+  outline_vertices_ = total;
+}
 
 DashPattern::DashPattern(std::vector<double> lengths) : lengths_(std::move(lengths)) {
   if (lengths_.empty()) return;
@@ -138,6 +164,7 @@ void Scene::stroke_polyline(std::vector<Vec2>&& points, bool closed, const Strok
                   "(%.3g dashes x overlap^2, limit 2^20)", work);
     bad(buf);
   }
+  count_outline(detail::stroke_vertex_bound(points, closed, style, outline_box(width_, height_)), "stroke_polyline");
   Item it;
   it.kind = Item::Kind::Stroke;
   it.contours.push_back(std::move(points));
@@ -150,6 +177,9 @@ void Scene::stroke_polyline(std::vector<Vec2>&& points, bool closed, const Strok
 void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) {
   for (const auto& c : contours) check_points(c, "fill_polygon", "contour");
   check_color(color, "fill_polygon");
+  double vertices = 0;
+  for (const auto& c : contours) vertices += static_cast<double>(c.size());
+  count_outline(vertices, "fill_polygon");
   Item it;
   it.kind = Item::Kind::Fill;
   it.contours = contours;
@@ -163,6 +193,7 @@ void Scene::fill_circle(Vec2 centre, double radius, Color color) {
   check_finite(radius, "fill_circle", "radius");
   if (radius < 0) bad("fill_circle: radius " + num(radius) + " is negative");
   check_color(color, "fill_circle");
+  count_outline(detail::arc_vertex_bound(centre, radius, 2 * std::numbers::pi, outline_box(width_, height_)) + 2, "fill_circle");
   Item it;
   it.kind = Item::Kind::Disk;
   it.centre = centre;
@@ -177,6 +208,24 @@ void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, 
   if (radius < 0) bad("stroke_circle: radius " + num(radius) + " is negative");
   check_style(style, "stroke_circle");
   check_color(color, "stroke_circle");
+  {
+    // As prepare_item draws it: an annulus, or a dashed stroke of the circle's polygon (made
+    // here, once its own size is known to be within the limit).
+    const detail::Box near = outline_box(width_, height_);
+    const double h = 0.5 * style.width, full = 2 * std::numbers::pi;
+    const double polygon = detail::arc_vertex_bound(centre, radius, full, near) + 2;
+    if (style.dashes.empty() || radius == 0 || h == 0) {
+      count_outline(detail::arc_vertex_bound(centre, radius + h, full, near) +
+                        (radius > h ? detail::arc_vertex_bound(centre, radius - h, full, near) : 0) + 4,
+                    "stroke_circle");
+    } else if (polygon > kMaxOutlineVertices) {
+      count_outline(polygon, "stroke_circle");
+    } else {
+      std::vector<Vec2> pts{Vec2{centre.x + radius, centre.y}};
+      detail::arc_interior(centre, radius, 0.0, full, near, [&](Vec2 q) { pts.push_back(q); });
+      count_outline(detail::stroke_vertex_bound(pts, true, style, near), "stroke_circle");
+    }
+  }
   Item it;
   it.kind = Item::Kind::Ring;
   it.centre = centre;
@@ -191,6 +240,10 @@ void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
   check_finite(size, "marker", "size");
   if (size < 0) bad("marker: size " + num(size) + " is negative");
   check_color(fill, "marker");
+  count_outline(shape == Marker::Circle
+                    ? detail::arc_vertex_bound(centre, 0.5 * size, 2 * std::numbers::pi, outline_box(width_, height_)) + 2
+                    : 16,
+                "marker");
   Item it;
   it.kind = Item::Kind::Marker;
   it.marker = shape;
@@ -202,6 +255,7 @@ void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
 
 void Scene::set_clip(const Path& path, FillRule rule) {
   check_points(path.points(), "set_clip", "path");
+  clip_vertices_ = static_cast<double>(path.flattened_size(detail::kArcTolerance));
   clip_ = std::make_shared<const ClipRegion>(ClipRegion{path, rule});
 }
 
@@ -227,6 +281,7 @@ void Scene::image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling
 void Scene::fill_path(const Path& path, FillRule rule, Color color) {
   check_points(path.points(), "fill_path", "path");
   check_color(color, "fill_path");
+  count_outline(static_cast<double>(path.flattened_size(detail::kArcTolerance)), "fill_path");
   Item it;
   it.kind = Item::Kind::PathFill;
   it.path = std::make_shared<const Path>(path);
@@ -239,6 +294,19 @@ void Scene::stroke_path(const Path& path, const StrokeStyle& style, Color color)
   check_points(path.points(), "stroke_path", "path");
   check_style(style, "stroke_path");
   check_color(color, "stroke_path");
+  {
+    // Flattened as prepare_item flattens it, once the flat points are known to be within the limit.
+    const double flat_points = static_cast<double>(path.flattened_size(detail::kArcTolerance));
+    if (flat_points > kMaxOutlineVertices) {
+      count_outline(flat_points, "stroke_path");
+    } else {
+      const Path::Flat flat = path.flatten(detail::kArcTolerance);
+      double vertices = 0;
+      for (std::size_t i = 0; i < flat.contours.size(); ++i)
+        vertices += detail::stroke_vertex_bound(flat.contours[i], flat.closed[i], style, outline_box(width_, height_));
+      count_outline(vertices, "stroke_path");
+    }
+  }
   Item it;
   it.kind = Item::Kind::PathStroke;
   it.path = std::make_shared<const Path>(path);
@@ -279,6 +347,7 @@ void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
   it.kind = Item::Kind::Text;
   // Laid out now: bad UTF-8 and missing characters are errors of this call.
   it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style, text_path(text, anchor, style)});
+  count_outline(static_cast<double>(it.text->outline.flattened_size(detail::kArcTolerance)), "text");
   it.centre = anchor;
   it.color = style.color;
   add(*items_, std::move(it), clip_);

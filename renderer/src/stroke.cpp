@@ -1,5 +1,7 @@
 #include "stroke.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <vector>
 
@@ -300,7 +302,7 @@ void clip_segment(Vec2 a, Vec2 d, double len, const Box& box, double& t0, double
 
 }  // namespace
 
-double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip) {
+double visible_dash_count(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip) {
   if (!(style.width > 0) || pts.size() < 2 || style.dashes.empty()) return 0;
   const double period = style.dashes.period();
   const double per_period = static_cast<double>((style.dashes.size() + 1) / 2);
@@ -315,11 +317,79 @@ double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeSty
     clip_segment(a, (1.0 / len) * e, len, near, t0, t1);
     if (t0 < t1) count += (t1 - t0) / period * per_period + 1;
   }
+  return count;
+}
+
+double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip) {
+  const double count = visible_dash_count(pts, closed, style, clip);
+  if (count == 0) return 0;
+  const double period = style.dashes.period();
+  const double per_period = static_cast<double>((style.dashes.size() + 1) / 2);
   // Each dash's outline overlaps those within a stroke width, and the rasterizer pays for the
   // crossings of overlapping outlines: a pattern finer than its pen costs that much more
   // (measured: about the square of the overlap).
   const double overlap = std::min(1 + style.width / period * per_period, count);
   return count * overlap * overlap;
+}
+
+double stroke_vertex_bound(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip) {
+  if (!(style.width > 0) || pts.empty()) return 0;
+  const double h = 0.5 * style.width;
+  const bool round_join = style.join == Join::Round;
+  // The geometry holds a vertex once more where the outline turns in y (it ends one monotone
+  // chain and begins the next): at most each corner vertex, and once in an arc of at most pi.
+  // A cap: its two corners, the square's two or the round cap's arc; a dash's caps may lie
+  // anywhere near the canvas.
+  auto cap_at = [&](Vec2 P) { return 8 + (style.cap == Cap::Round ? 1 + arc_vertex_bound(P, h, std::numbers::pi, clip) : 4); };
+  // A join, both sides (Outliner::join): the inner side at most 3, the outer side its miter tip,
+  // or its two corners and a round join's arc.
+  auto join_at = [&](Vec2 P, Vec2 a, Vec2 b) -> double {
+    const double c = cross(a, b), dt = dot(a, b);
+    if (c == 0 && dt > 0) return 4;
+    if (!round_join) return 10;
+    const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1 + dt)));
+    if (cos_half > 0.5 && h * (1.0 / cos_half - 1.0) <= kArcTolerance) return 8;
+    const double theta = c == 0 ? std::numbers::pi : std::atan2(std::abs(c), dt);
+    return 11 + arc_vertex_bound(P, h, theta, clip);
+  };
+  double joins = 0;
+  std::size_t m = 0;  // distinct consecutive points
+  Vec2 first{}, prev{}, d_first{}, d_prev{};
+  for (const Vec2& p : pts) {
+    if (m > 0 && p == prev) continue;
+    if (m > 0) {
+      const Vec2 e = p - prev, d = (1.0 / length(e)) * e;
+      if (m > 1) joins += join_at(prev, d_prev, d); else d_first = d;
+      d_prev = d;
+    }
+    if (m == 0) first = p;
+    prev = p;
+    ++m;
+  }
+  double ends = 0;
+  if (m == 1) {
+    ends = 2 * cap_at(first);
+  } else if (closed) {
+    if (!(prev == first)) {
+      const Vec2 e = first - prev, d = (1.0 / length(e)) * e;
+      joins += join_at(prev, d_prev, d) + join_at(first, d, d_first);
+    } else {
+      joins += join_at(first, d_prev, d_first);
+    }
+  } else {
+    ends = cap_at(first) + cap_at(prev);
+  }
+  double total = joins + ends + 4 * static_cast<double>(m) + 16;
+  if (!style.dashes.empty()) {
+    // Each dash: its two ends and caps, anywhere near the canvas: a cap centred on the box's
+    // edge takes the most (the uniform count below a radius of 1e6; beyond, a dash within the
+    // stroke's reach of the box is at most one band of distance farther).
+    const double cap = 8 + (style.cap == Cap::Round
+                                ? 1 + arc_vertex_bound({clip.x0, clip.y0}, h, std::numbers::pi, clip) + 8 * std::numbers::pi + 2
+                                : 4);
+    total += visible_dash_count(pts, closed, style, clip) * (2 * cap + 8);
+  }
+  return total;
 }
 
 void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {

@@ -40,6 +40,19 @@ void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& styl
 // Scene::stroke_polyline refuses more than kMaxDashWork (base/limits.hpp): a few seconds.
 double visible_dash_work(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip);
 
+// An upper bound on the outline vertices stroke_path appends for `pts`, computed from the
+// points alone (one pass, no allocation): per join both sides' vertices, a round join's arc as
+// arc_vertex_bound counts it (a hairpin turn of a pen of width w takes about
+// pi / sqrt(8e-4 / w) vertices: 100 at w = 2), the caps, and per dash near `clip` (as
+// visible_dash_work counts them) its two caps; the joins inside dashes are the path's own.
+// `clip` must contain the box the rasterizer clips to (the canvas and the filter's margin).
+// Scene refuses an outline past kMaxOutlineVertices (base/limits.hpp) before building it.
+double stroke_vertex_bound(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip);
+
+// The dashes stroke_path generates for `pts` near `clip`, at most (segment ends count as one
+// each): visible_dash_work's count.
+double visible_dash_count(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip);
+
 // The stroke of a path with no dashes.
 void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out);
 

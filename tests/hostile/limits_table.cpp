@@ -56,6 +56,9 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"image read: values (pixels x channels)", power_of_two((long long)(f::kMaxImageValues))},
       {"image read: data window origin (EXR data window, PNG `oFFs`)", power_of_two(f::kMaxImageOrigin) + " either way"},
       {"dash work of one stroke: dashes near the canvas x (1 + width / period)^2", power_of_two((long long)(f::kMaxDashWork))},
+      {"outline vertices of one item, and of all a scene's items together: stroke joins and caps, dashes, circles, markers, "
+       "flattened paths, glyphs, clip paths, estimated from above before any is built",
+       power_of_two((long long)(f::kMaxOutlineVertices))},
       {"the exact union's work for one drawn item: crossings of its outline with itself on the canvas",
        power_of_two((long long)(f::kMaxSweepCrossings)) + " (`Scene::set_max_crossings` changes it)"},
       {"`[[axes.bezier]]` control points", std::to_string(f::kMaxBezierPoints) + " (degree " + std::to_string(f::kMaxBezierPoints - 1) + ")"},

@@ -28,6 +28,13 @@ inline constexpr double kMaxDashWork = 1 << 20;
 // random points on 1024^2, stroked, cross about 4.5e9 times.
 inline constexpr double kMaxSweepCrossings = double(1 << 28);
 
+// The outline vertices of a scene's items (stroke joins and caps, dashes, circles, markers,
+// flattened paths, glyphs and clip paths), estimated from above before any is built: each item's
+// and all of a scene's together (the rasterizer holds every item's outline at once on more than
+// one thread), about 20 bytes a vertex, so 2^26 is about 1.3 GB. A 10^6-point zigzag with
+// hairpin turns and round joins (a pen of width 2) needs about 2.2e8 (3.9 GB).
+inline constexpr double kMaxOutlineVertices = double(1 << 26);
+
 // Resolution written into PNG, SVG and PDF files, in dots per inch (0 leaves it unset).
 inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
 

@@ -4,6 +4,7 @@
 // the rasterizer flattens it within a chord tolerance, a vector writer keeps its segments.
 #include <splinefig/renderer/renderer.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +33,8 @@ class Path {
     std::vector<bool> closed;
   };
   Flat flatten(double tolerance) const;
+  // The points flatten(tolerance) would give, counted without making them.
+  std::size_t flattened_size(double tolerance) const;
 
   // The path mapped by x' = a x + c y + e, y' = b x + d y + f (exact for Beziers).
   Path transformed(double a, double b, double c, double d, double e, double f) const;

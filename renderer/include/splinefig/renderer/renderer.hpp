@@ -188,6 +188,10 @@ class Scene {
   Kernel filter_;
   BlendSpace blend_ = BlendSpace::linear;
   double max_crossings_ = kMaxSweepCrossings;
+  double outline_vertices_ = 0;  // the recorded items' outline vertices, estimated from above
+  double clip_vertices_ = 0;     // the clip path's, added to each clipped item's
+  // Adds an item's estimate to the scene's; std::invalid_argument naming `call` past the limit.
+  void count_outline(double vertices, const char* call);
   std::shared_ptr<const struct ClipRegion> clip_;  // scene_item.hpp
   std::unique_ptr<std::vector<Item>> items_;
   friend Image rasterize(const Scene&, int threads);
