@@ -214,7 +214,7 @@ AnimationInfo write_animation(const FigureSpec& spec, const std::string& path, d
       info.width = fig.info.width;
       info.height = fig.info.height;
     }
-    anim.add(render::rasterize(fig.scene, threads), animation_delay(spec, i));
+    anim.add(render::rasterize(fig.raster, threads), animation_delay(spec, i));
   }
   anim.write(path);
   info.file = std::filesystem::path(path).filename().string();

@@ -244,13 +244,15 @@ FigureScene figure_scene(const FigureSpec& spec, double scale) {
   Painter p(scale, spec.font_family);
   FigureInfo info = build(spec, scale, p);
   render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter, spec.canvas.blend);
-  return {std::move(scene), std::move(info)};
+  render::Scene raster =
+      scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter, spec.canvas.blend, true);
+  return {std::move(scene), std::move(info), std::move(raster)};
 }
 
 RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& options) {
   FigureScene fs = figure_scene(spec, options.scale);
   RenderedFigure out;
-  out.image = render::rasterize(fs.scene, options.threads);
+  out.image = render::rasterize(fs.raster, options.threads);
   out.info = std::move(fs.info);
   return out;
 }

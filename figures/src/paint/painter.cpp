@@ -27,6 +27,10 @@ void Painter::stroke(std::vector<Vec2> pts, bool closed, const render::StrokeSty
   if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
   add(StrokeOp{std::move(pts), closed, s, c});
 }
+void Painter::hairline(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c) {
+  if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
+  add(StrokeOp{std::move(pts), closed, s, c, true});
+}
 void Painter::stroke(render::Path path, const render::StrokeStyle& s, Color c) {
   if (path.empty() || !(s.width > 0) || c.a <= 0) return;
   add(PathStrokeOp{std::move(path), s, c});
@@ -91,6 +95,28 @@ std::vector<Vec2> scaled(const std::vector<Vec2>& pts, double s) {
   return out;
 }
 
+// A hairline's points (output pixels) on the pixel grid: across each horizontal or vertical
+// segment, its centre onto a pixel centre (odd width, rounded, at least 1) or a pixel edge
+// (even width); a coordinate along the segments only, onto a pixel edge. A point where a
+// horizontal and a vertical segment meet is snapped across both.
+std::vector<Vec2> snapped(std::vector<Vec2> pts, bool closed, double width) {
+  const long n = std::max(1L, std::lround(width));
+  auto across = [&](double c) { return n % 2 ? std::floor(c) + 0.5 : std::round(c); };
+  const std::size_t m = pts.size();
+  std::vector<char> vertical(m, 0), horizontal(m, 0);
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t j = i + 1 < m ? i + 1 : (closed && m > 2 ? 0 : m);
+    if (j == m) continue;
+    if (pts[i].x == pts[j].x) vertical[i] = vertical[j] = 1;
+    if (pts[i].y == pts[j].y) horizontal[i] = horizontal[j] = 1;
+  }
+  for (std::size_t i = 0; i < m; ++i) {
+    pts[i].x = vertical[i] ? across(pts[i].x) : std::round(pts[i].x);
+    pts[i].y = horizontal[i] ? across(pts[i].y) : std::round(pts[i].y);
+  }
+  return pts;
+}
+
 render::StrokeStyle scaled(render::StrokeStyle st, double s) {
   st.width *= s;
   st.dashes = st.dashes.scaled(s);
@@ -126,7 +152,7 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
 }  // namespace
 
 render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter,
-                       render::BlendSpace blend) {
+                       render::BlendSpace blend, bool snap) {
   const double s = p.scale();
   render::Scene scene(width, height, background, filter);
   scene.set_blend_space(blend);
@@ -136,7 +162,8 @@ render::Scene scene_of(const Painter& p, int width, int height, Color background
         [&](const auto& o) {
           using T = std::decay_t<decltype(o)>;
           if constexpr (std::is_same_v<T, StrokeOp>) {
-            scene.stroke_polyline(scaled(o.points, s), o.closed, scaled(o.style, s), o.color);
+            if (snap && o.snap) scene.stroke_polyline(snapped(scaled(o.points, s), o.closed, o.style.width * s), o.closed, scaled(o.style, s), o.color);
+            else scene.stroke_polyline(scaled(o.points, s), o.closed, scaled(o.style, s), o.color);
           } else if constexpr (std::is_same_v<T, PathStrokeOp>) {
             scene.stroke_path(o.path.transformed(s, 0, 0, s, 0, 0), scaled(o.style, s), o.color);
           } else if constexpr (std::is_same_v<T, FillOp>) {

@@ -21,6 +21,7 @@ struct StrokeOp {
   bool closed;
   render::StrokeStyle style;
   Color color;
+  bool snap = false;  // an axis-aligned hairline: on the pixel grid in raster output
 };
 struct PathStrokeOp {  // exact curves: lines and Beziers
   render::Path path;
@@ -63,6 +64,11 @@ class Painter : public TextMeasure {
 
   void stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c);
   void stroke(render::Path path, const render::StrokeStyle& s, Color c);
+  // A guide's line of horizontal and vertical segments (a spine, a tick, a grid line): in raster
+  // output each segment's centre line moves onto the pixel grid (pixel centres for an odd width
+  // in output pixels, pixel edges for an even one) and its ends onto pixel edges; vector output
+  // keeps the exact positions.
+  void hairline(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c);
   void fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c);
   void circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke);
   void marker(render::Marker shape, Vec2 centre, double size, Color c);
@@ -95,7 +101,8 @@ Vec2 raster_size(const Raster& r);
 
 
 // The display list at the painter's scale as a scene of the given size (pixels).
+// `snap`: the hairlines on the pixel grid (raster output).
 render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter,
-                       render::BlendSpace blend);
+                       render::BlendSpace blend, bool snap = false);
 
 }  // namespace splinefig::figures::detail

@@ -23,21 +23,21 @@ void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides
   if (ax.grid) {
     for (const auto& t : panel.x_ticks) {
       double x = tick_pixel(panel.map.x, t.value);
-      p.stroke({{x, b.top}, {x, b.bottom}}, false, hairline(), g.grid);
+      p.hairline({{x, b.top}, {x, b.bottom}}, false, hairline(), g.grid);
     }
     for (const auto& t : panel.y_ticks) {
       double y = tick_pixel(panel.map.y, t.value);
-      p.stroke({{b.left, y}, {b.right, y}}, false, hairline(), g.grid);
+      p.hairline({{b.left, y}, {b.right, y}}, false, hairline(), g.grid);
     }
   }
   if (ax.zero_line) {
     if (ax.y.scale == Scale::Linear) {
       double y = panel.map.y.to_pixel(0);
-      if (y > b.top + 0.5 && y < b.bottom - 0.5) p.stroke({{b.left, y}, {b.right, y}}, false, hairline(), g.zero);
+      if (y > b.top + 0.5 && y < b.bottom - 0.5) p.hairline({{b.left, y}, {b.right, y}}, false, hairline(), g.zero);
     }
     if (ax.x.scale == Scale::Linear) {
       double x = panel.map.x.to_pixel(0);
-      if (x > b.left + 0.5 && x < b.right - 0.5) p.stroke({{x, b.top}, {x, b.bottom}}, false, hairline(), g.zero);
+      if (x > b.left + 0.5 && x < b.right - 0.5) p.hairline({{x, b.top}, {x, b.bottom}}, false, hairline(), g.zero);
     }
   }
 }
@@ -48,31 +48,31 @@ void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides&
     // Spines lie just outside the box, on whole pixels at 1x: crisp at any integer scale.
     const double l = b.left - 0.5, r = b.right + 0.5, t = b.top - 0.5, bo = b.bottom + 0.5;
     if (ax.frame == Frame::Box) {
-      p.stroke({{l, t}, {r, t}, {r, bo}, {l, bo}}, true, hairline(), g.axis);
+      p.hairline({{l, t}, {r, t}, {r, bo}, {l, bo}}, true, hairline(), g.axis);
     } else {
-      p.stroke({{l, t}, {l, bo}, {r, bo}}, false, hairline(), g.axis);
+      p.hairline({{l, t}, {l, bo}, {r, bo}}, false, hairline(), g.axis);
     }
     // Each tick, then its label where the layout placed it (plot_layout.cpp).
     auto label = [&](const PlacedText& t) { p.text(t.text, t.at, t.font, t.anchor, t.angle); };
     for (size_t i = 0; i < panel.x_ticks.size(); ++i) {
       double x = tick_pixel(panel.map.x, panel.x_ticks[i].value);
-      p.stroke({{x, b.bottom + 1}, {x, b.bottom + 1 + g.tick_length}}, false, hairline(), g.axis);
+      p.hairline({{x, b.bottom + 1}, {x, b.bottom + 1 + g.tick_length}}, false, hairline(), g.axis);
       label(panel.x_tick_labels.at(i));
     }
     for (size_t i = 0; i < panel.y_ticks.size(); ++i) {
       double y = tick_pixel(panel.map.y, panel.y_ticks[i].value);
-      p.stroke({{b.left - 1, y}, {b.left - 1 - g.tick_length, y}}, false, hairline(), g.axis);
+      p.hairline({{b.left - 1, y}, {b.left - 1 - g.tick_length, y}}, false, hairline(), g.axis);
       label(panel.y_tick_labels.at(i));
     }
     // Minor ticks: three fifths as long, no label.
     const double minor = 0.6 * g.tick_length;
     for (double v : panel.x_minor) {
       const double x = panel.map.x.to_pixel(v);
-      p.stroke({{x, b.bottom + 1}, {x, b.bottom + 1 + minor}}, false, hairline(), g.axis);
+      p.hairline({{x, b.bottom + 1}, {x, b.bottom + 1 + minor}}, false, hairline(), g.axis);
     }
     for (double v : panel.y_minor) {
       const double y = panel.map.y.to_pixel(v);
-      p.stroke({{b.left - 1, y}, {b.left - 1 - minor, y}}, false, hairline(), g.axis);
+      p.hairline({{b.left - 1, y}, {b.left - 1 - minor, y}}, false, hairline(), g.axis);
     }
     for (double m : ax.x.marks) {
       double x = panel.map.x.to_pixel(m);

@@ -24,11 +24,15 @@ struct RenderedFigure {
 // element cannot be read.
 RenderedFigure render_figure(const FigureSpec& spec, const RenderOptions& options = {});
 
-// The figure as a renderer scene (what render_figure rasterizes, and what vector/ writes as
-// SVG or PDF), at `scale` output pixels per spec pixel.
+// The figure as renderer scenes at `scale` output pixels per spec pixel: `scene` with every
+// position exact (what vector/ writes as SVG or PDF), and `raster`, the same items with the
+// axis-aligned hairlines (spines, ticks, grid and zero lines) moved onto the pixel grid, so that
+// a 1-px tick is one pixel column at full ink (what render_figure, PNG, EXR and the animation
+// rasterize).
 struct FigureScene {
   render::Scene scene;
   FigureInfo info;
+  render::Scene raster;
 };
 FigureScene figure_scene(const FigureSpec& spec, double scale = 1);
 
