@@ -6,6 +6,8 @@
 
 #include <cairo-pdf.h>
 
+#include <algorithm>
+#include <cmath>
 #include <ctime>
 #include <numbers>
 #include <stdexcept>
@@ -15,6 +17,9 @@ namespace splinefig::vector {
 namespace {
 
 using render::Vec2;
+
+// How far inside its rectangle an image is placed, in output pixels (PdfWriter::image).
+constexpr double kImageInset = 0.01;
 
 class PdfWriter final : public render::SceneVisitor {
  public:
@@ -71,8 +76,15 @@ class PdfWriter final : public render::SceneVisitor {
   void image(const Image& im, Vec2 p0, Vec2 p1, render::Scene::Sampling smp) override {
     cairo_surface_t* s = detail::image_surface(im);
     cairo_save(cr_);
-    cairo_translate(cr_, p0.x, p0.y);
-    cairo_scale(cr_, (p1.x - p0.x) / im.width, (p1.y - p0.y) / im.height);
+    // The image's corners a hundredth of a pixel inside its rectangle: a viewer that rounds
+    // the image's device rectangle outwards (poppler at 96 dpi, where 1 pt is 4/3 px and an
+    // edge at 48 pt lands at 63.99999 or 64.00001 px) would otherwise stretch a 256-px tile over
+    // 257 pixels and resample every row and column; inset, it covers exactly its own pixels,
+    // one image pixel to one device pixel, as the PNG shows it.
+    const double ix = std::min(kImageInset, 0.25 * std::abs(p1.x - p0.x)) * (p1.x >= p0.x ? 1 : -1);
+    const double iy = std::min(kImageInset, 0.25 * std::abs(p1.y - p0.y)) * (p1.y >= p0.y ? 1 : -1);
+    cairo_translate(cr_, p0.x + ix, p0.y + iy);
+    cairo_scale(cr_, (p1.x - p0.x - 2 * ix) / im.width, (p1.y - p0.y - 2 * iy) / im.height);
     cairo_set_source_surface(cr_, s, 0, 0);
     cairo_pattern_t* pat = cairo_get_source(cr_);
     cairo_pattern_set_filter(pat, smp == render::Scene::Sampling::Nearest ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_BILINEAR);
