@@ -114,3 +114,38 @@ CASES = [
 def test_bad_input_is_refused_naming_the_argument(call, exc, pattern):
     with pytest.raises(exc, match=pattern):
         call()
+
+
+def _png_with_origin(x, y):
+    """A 23 x 4 RGB PNG whose oFFs chunk puts its data window at (x, y) pixels."""
+    import struct
+    import zlib
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+    rows = b"".join(b"\x00" + bytes([10 * i] * 23 * 3) for i in range(4))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 23, 4, 8, 2, 0, 0, 0)) +
+            chunk(b"oFFs", struct.pack(">iiB", x, y, 0)) + chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+
+@pytest.mark.parametrize("x, y", [(0, 2**31 - 1), (2**31 - 1, 0), (0, -2**31), (2**30 + 1, 0)])
+def test_read_image_refuses_a_data_window_origin_past_the_limit(tmp_path, x, y):
+    # An oFFs origin near INT_MAX overflowed origin + size and read_image returned unwritten
+    # memory, different on every call; the limit is 2^30 either way (docs/limits.md).
+    path = tmp_path / "far.png"
+    path.write_bytes(_png_with_origin(x, y))
+    with pytest.raises(OSError, match=rf"data window origin \({x}, {y}\) out of range \(limit 2\^30 either way\)"):
+        splinefig.read_image(str(path))
+
+
+def test_read_image_reads_a_data_window_origin_at_the_limit(tmp_path):
+    # At 2^30 the image is read, the same values on every call: row i is 10 i / 255 in sRGB.
+    path = tmp_path / "edge.png"
+    path.write_bytes(_png_with_origin(2**30, -2**30))
+    first = np.array(splinefig.read_image(str(path)))
+    assert first.shape[:2] == (4, 23)
+    assert np.array_equal(first, np.array(splinefig.read_image(str(path))))
+    linear = np.array(splinefig.read_image(str(path), linear=False))
+    for i in range(4):
+        assert np.allclose(linear[i, :, :3], 10 * i / 255, atol=1e-6)

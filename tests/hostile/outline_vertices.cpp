@@ -31,12 +31,12 @@ std::string hairpin_spec(int n, double width) {
 
 }  // namespace
 
-TEST_CASE("a series of 2e5 hairpin turns with round joins (4 GB of outline) is refused before it is built") {
-  // Each turn of a pen 40 px wide is an arc of about 500 vertices: 1e8 in all (2.2e8, 3.9 GB and
+TEST_CASE("a series of 8e4 hairpin turns with round joins (2 GB of outline) is refused before it is built") {
+  // Each turn of a pen 200 px wide is an arc of about 1100 vertices: 9e7 in all (1.2e8, 3.9 GB and
   // two minutes before the sweep's limit stopped it, for the 10^6-point version of width 2).
   const fs::path dir = scratch();
-  write_file(dir / "hair.csv", hairpin_csv(200000));
-  const Outcome o = render_spec(dir, "hair", hairpin_spec(200000, 40));
+  write_file(dir / "hair.csv", hairpin_csv(80000));
+  const Outcome o = render_spec(dir, "hair", hairpin_spec(80000, 200));
   INFO(o.seconds << " s: " << o.err);
   CHECK_FALSE(o.killed);
   CHECK(o.code == 2);
