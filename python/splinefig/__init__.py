@@ -704,6 +704,8 @@ def render_spec(spec: Any, *, scale: float = 1.0, threads: int = 0, text: Option
 def render_figure(name: str, *, scale: float = 1.0, threads: int = 0) -> np.ndarray:
     """A built-in figure by name (e.g. "bias"; figure_names() lists them)."""
     n = _str(name, "name")
+    if "\0" in n:
+        raise ValueError("name: a name holding a NUL character")
     path = os.path.join(specs_dir(), n + ".toml")
     if "/" in n or not os.path.isfile(path):
         raise ValueError(f"name: no built-in figure '{n}' in {specs_dir()}")

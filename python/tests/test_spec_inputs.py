@@ -38,4 +38,8 @@ def test_no_function_takes_a_path_holding_a_nul(tmp_path):
         splinefig.write_image(str(tmp_path / "a\0b.png"), image)
     with pytest.raises(ValueError, match="path: a path holding a NUL character"):
         splinefig.read_image(str(tmp_path / "a\0b.png"))
+    # A built-in figure's name becomes a path too; the name is not echoed with its NUL.
+    with pytest.raises(ValueError) as e:
+        splinefig.render_figure("bi\0as")
+    assert str(e.value) == "name: a name holding a NUL character"
     assert list(tmp_path.iterdir()) == []
