@@ -67,7 +67,7 @@ Comparison compare_images(const Image& a_in, const Image& b_in, const Options& o
   mo.threads = options.threads;
   if (mask) {
     if (mask->width != w.width || mask->height != w.height)
-      throw std::invalid_argument("mask is " + std::to_string(mask->width) + " x " + std::to_string(mask->height) +
+      throw CompareError("mask is " + std::to_string(mask->width) + " x " + std::to_string(mask->height) +
                                   ", the images are " + std::to_string(w.width) + " x " + std::to_string(w.height));
     keep = Image::zeros(w.width, w.height, 1);
     keep.x = w.x;

@@ -305,7 +305,7 @@ Metrics idiff_metrics(const Image& a_in, const Image& b_in, float failthresh, fl
   const std::size_t nchunks = (npix + chunk - 1) / chunk;
   std::vector<Partial> parts(nchunks);
   if (!inner_loop_available(options.loop))
-    throw std::invalid_argument("idiff_metrics: this build or CPU lacks the requested inner loop");
+    throw CompareError("idiff_metrics: this build or CPU lacks the requested inner loop");
   const bool fast = nch == 4 && !L.mask && !L.err && options.loop != InnerLoop::portable;
   auto run = [&](std::size_t i) {
     const std::size_t p0 = i * chunk, p1 = std::min(npix, p0 + chunk);

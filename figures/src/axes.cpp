@@ -92,7 +92,7 @@ std::vector<Tick> nice_ticks(double lo, double hi, double target, double step) {
   if (!(last - first < kMaxTicks) || !(std::abs(first) < 0x1p53 && std::abs(last) < 0x1p53)) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "a tick step of %g gives more than %d ticks over [%g, %g]", step, kMaxTicks, lo, hi);
-    throw std::invalid_argument(buf);
+    throw TickError(buf);
   }
   int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
   // 2.5-type steps never arise (1-2-5 only), but forced steps may need one more digit.
@@ -110,7 +110,7 @@ std::vector<Tick> nice_ticks(double lo, double hi, double target, double step) {
 
 std::vector<Tick> log_ticks(double lo, double hi) {
   if (lo > hi) std::swap(lo, hi);
-  if (!(lo > 0 && hi < HUGE_VAL)) throw std::invalid_argument("log ticks need a positive, finite range");
+  if (!(lo > 0 && hi < HUGE_VAL)) throw TickError("log ticks need a positive, finite range");
   int k0 = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));
   int k1 = static_cast<int>(std::floor(std::log10(hi) + 1e-9));
   if (k1 - k0 < 1) return nice_ticks(lo, hi, 5);

@@ -42,7 +42,7 @@ void check_dpi(Format format, const FigureFileOptions& o) {
   if (o.dpi != 0 && !(o.dpi >= kMinDpi && o.dpi <= kMaxDpi)) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "dpi %g is outside [%g, %g]", o.dpi, kMinDpi, kMaxDpi);
-    throw std::invalid_argument(buf);
+    throw FileOptionsError(buf);
   }
   // The file holds dpi x scale (the figure keeps its printed size at any scale): that is what
   // the limit bounds, for rasters and vectors alike (a vector without --dpi takes 96).
@@ -51,7 +51,7 @@ void check_dpi(Format format, const FigureFileOptions& o) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "dpi %g at scale %g is %g dots per inch in the file, outside [%g, %g]",
                   o.dpi > 0 ? o.dpi : 96.0, o.scale, file_dpi, kMinDpi, kMaxDpi);
-    throw std::invalid_argument(buf);
+    throw FileOptionsError(buf);
   }
 }
 

@@ -43,9 +43,9 @@ struct WebpAnimation::State {
 
 WebpAnimation::WebpAnimation(int width, int height, int loops) : state_(std::make_unique<State>()) {
   if (width < 1 || height < 1 || width > kMaxAnimationSide || height > kMaxAnimationSide)
-    throw std::invalid_argument("animation of " + std::to_string(width) + " x " + std::to_string(height) +
+    throw AnimationError("animation of " + std::to_string(width) + " x " + std::to_string(height) +
                                 " px: each side must be 1 to " + std::to_string(kMaxAnimationSide) + " px (WebP's limit)");
-  if (loops < 0 || loops > 65535) throw std::invalid_argument("animation loop count " + std::to_string(loops) + " is outside [0, 65535]");
+  if (loops < 0 || loops > 65535) throw AnimationError("animation loop count " + std::to_string(loops) + " is outside [0, 65535]");
   State& s = *state_;
   s.width = width;
   s.height = height;
@@ -75,15 +75,15 @@ void WebpAnimation::add(const Image& frame, int delay_ms) {
   State& s = *state_;
   if (s.finished) throw std::logic_error("animation: a frame added after finish()");
   if (frame.width != s.width || frame.height != s.height)
-    throw std::invalid_argument("animation frame of " + std::to_string(frame.width) + " x " + std::to_string(frame.height) +
+    throw AnimationError("animation frame of " + std::to_string(frame.width) + " x " + std::to_string(frame.height) +
                                 " px in an animation of " + std::to_string(s.width) + " x " + std::to_string(s.height) + " px");
   if (frame.channels != 3 && frame.channels != 4)
-    throw std::invalid_argument("animation frame of " + std::to_string(frame.channels) + " channels (3 or 4 needed)");
+    throw AnimationError("animation frame of " + std::to_string(frame.channels) + " channels (3 or 4 needed)");
   if (delay_ms < kMinFrameDelayMs || delay_ms > kMaxFrameDelayMs)
-    throw std::invalid_argument("frame delay " + std::to_string(delay_ms) + " ms is outside [" + std::to_string(kMinFrameDelayMs) +
+    throw AnimationError("frame delay " + std::to_string(delay_ms) + " ms is outside [" + std::to_string(kMinFrameDelayMs) +
                                 ", " + std::to_string(kMaxFrameDelayMs) + "] ms");
   if (static_cast<std::uint64_t>(s.timestamp) + static_cast<std::uint64_t>(delay_ms) > 0x7fffffffu)
-    throw std::invalid_argument("animation longer than 2^31 ms");
+    throw AnimationError("animation longer than 2^31 ms");
   const std::vector<std::uint8_t> values = srgb8_values(frame);
   WebPPicture picture;
   if (!WebPPictureInit(&picture)) throw std::runtime_error("libwebp: version mismatch of the picture");

@@ -44,7 +44,7 @@ long Kernel::piece_at(double s) const {
 }
 
 Kernel Kernel::piecewise(std::string name, double lo, std::vector<std::vector<double>> pieces) {
-  auto bad = [&](const std::string& why) { throw std::invalid_argument("kernel '" + name + "': " + why); };
+  auto bad = [&](const std::string& why) { throw KernelError("kernel '" + name + "': " + why); };
   if (pieces.empty()) bad("no pieces");
   if (!std::isfinite(lo)) bad("lo is not finite");
   for (const auto& p : pieces) {
@@ -65,7 +65,7 @@ Kernel Kernel::box() { return Kernel(); }
 Kernel Kernel::tent() { return piecewise("tent", -1, {{0.0, 1.0}, {1.0, -1.0}}); }
 
 Kernel Kernel::lanczos(int a) {
-  if (a < 1) throw std::invalid_argument("kernel 'lanczos" + std::to_string(a) + "': a must be at least 1");
+  if (a < 1) throw KernelError("kernel 'lanczos" + std::to_string(a) + "': a must be at least 1");
   Kernel k;
   k.pieces_.clear();
   k.name_ = "lanczos" + std::to_string(a);

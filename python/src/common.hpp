@@ -1,6 +1,7 @@
 #pragma once
 // What the binding files share: numpy arrays to and from splinefig::Image without extra copies,
 // and the release of the GIL around library work.
+#include <splinefig/base/error.hpp>
 #include <splinefig/image/image.hpp>
 
 #include <pybind11/numpy.h>
@@ -12,6 +13,12 @@
 namespace splinefig::python {
 
 namespace py = pybind11;
+
+// An argument of a binding's own that the library cannot take (an unknown name, arrays of
+// mismatched sizes); a ValueError in Python, as the library's bad_input errors are.
+struct ArgumentError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
 
 using f64array = py::array_t<double, py::array::c_style>;
 using f32array = py::array_t<float, py::array::c_style>;

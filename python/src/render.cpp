@@ -39,7 +39,7 @@ E pick(const std::string& name, const char* what, std::initializer_list<std::pai
     if (name == n) return e;
     names += (names.empty() ? "" : ", ") + std::string(n);
   }
-  throw std::invalid_argument(std::string(what) + ": unknown value '" + name + "' (known: " + names + ")");
+  throw ArgumentError(std::string(what) + ": unknown value '" + name + "' (known: " + names + ")");
 }
 
 render::StrokeStyle stroke_of(double width, const std::string& join, const std::string& cap, double miter_limit,
@@ -67,7 +67,7 @@ render::Path path_of(const f64array& vertices, const u8array& codes, double dx =
   const double* v = vertices.data();
   const std::uint8_t* c = codes.size() ? codes.data() : nullptr;
   if (c && static_cast<std::size_t>(codes.size()) != n)
-    throw std::invalid_argument("codes: " + std::to_string(codes.size()) + " codes for " + std::to_string(n) + " vertices");
+    throw ArgumentError("codes: " + std::to_string(codes.size()) + " codes for " + std::to_string(n) + " vertices");
   render::Path path;
   bool started = false;
   const bool moved = dx != 0 || dy != 0 || ox != 0 || oy != 0;
@@ -90,9 +90,9 @@ render::Path path_of(const f64array& vertices, const u8array& codes, double dx =
       continue;
     }
     const std::size_t need = code == 2 ? 1 : code == 3 ? 2 : code == 4 ? 3 : 0;
-    if (need == 0) throw std::invalid_argument("codes: unknown path code " + std::to_string(code) + " at vertex " + std::to_string(i));
-    if (!started) throw std::invalid_argument("codes: a curve with no start point at vertex " + std::to_string(i));
-    if (i + need > n) throw std::invalid_argument("codes: the curve at vertex " + std::to_string(i) + " runs past the last vertex");
+    if (need == 0) throw ArgumentError("codes: unknown path code " + std::to_string(code) + " at vertex " + std::to_string(i));
+    if (!started) throw ArgumentError("codes: a curve with no start point at vertex " + std::to_string(i));
+    if (i + need > n) throw ArgumentError("codes: the curve at vertex " + std::to_string(i) + " runs past the last vertex");
     if (code == 2) path.line_to(at(i));
     else if (code == 3) path.quad_to(at(i), at(i + 1));
     else path.cubic_to(at(i), at(i + 1), at(i + 2));
@@ -194,7 +194,7 @@ void bind_render(py::module_& m) {
   });
   py::class_<render::Scene>(m, "Scene")
       .def(py::init([](int w, int h, const std::array<float, 4>& bg, const Kernel& filter) {
-        if (w < 1 || h < 1) throw std::invalid_argument("width, height: " + std::to_string(w) + "x" + std::to_string(h) + " is not at least 1x1");
+        if (w < 1 || h < 1) throw ArgumentError("width, height: " + std::to_string(w) + "x" + std::to_string(h) + " is not at least 1x1");
         render::validate_pixel_filter(filter);
         return render::Scene(w, h, color_of(bg), filter);
       }))

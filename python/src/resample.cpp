@@ -14,12 +14,12 @@ namespace splinefig::python {
 void bind_resample(py::module_& m) {
   m.def("resample", [](const f32array& a, int width, int height, const Kernel& k, const std::string& edge, bool interpolating, int threads) {
     const auto e = parse_edge(edge);
-    if (!e) throw std::invalid_argument("edge: '" + edge + "' is not one of clamp, mirror, wrap, black");
+    if (!e) throw ArgumentError("edge: '" + edge + "' is not one of clamp, mirror, wrap, black");
     ResampleOptions o;
     o.edge = *e;
     o.interpolating = interpolating;
     o.threads = threads;
-    if (width < 1 || height < 1) throw std::invalid_argument("resample: the output size is zero");
+    if (width < 1 || height < 1) throw ArgumentError("resample: the output size is zero");
     const bool squeeze = a.ndim() == 2;
     const int c = a.ndim() == 3 ? static_cast<int>(a.shape(2)) : 1;
     Image out(width, height, c);

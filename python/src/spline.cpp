@@ -120,7 +120,7 @@ void bind_spline(py::module_& m) {
     for (py::ssize_t i = 0; i < x.size(); ++i) o[i] = k(in[i]);
   });
   m.def("kernel_derivative", [](const Kernel& k, const f64array& x, int order) {
-    if (!k.polynomial()) throw std::invalid_argument("derivative: " + k.name() + " is not a piecewise polynomial");
+    if (!k.polynomial()) throw ArgumentError("derivative: " + k.name() + " is not a piecewise polynomial");
     return map_array(x, [&k, order](double s) { return k.derivative(s, order); });
   });
   m.def("response", [](const Kernel& k, const f64array& f) { return map_array(f, [&k](double v) { return response(k, v); }); });
@@ -156,7 +156,7 @@ void bind_spline(py::module_& m) {
   m.def("evaluate_into", [](const f64array& knots, const Basis& b, int grain, const std::string& ends, int derivative, f64array& out) {
     const Curve c = curve_of(knots, b, ends);
     const std::size_t n = sample_count(c, grain) * static_cast<std::size_t>(c.dim());
-    if (static_cast<std::size_t>(out.size()) != n) throw std::invalid_argument("out: has the wrong size");
+    if (static_cast<std::size_t>(out.size()) != n) throw ArgumentError("out: has the wrong size");
     std::span<double> o(out.mutable_data(), n);
     py::gil_scoped_release unlocked;
     sample_into(c, grain, derivative, o);

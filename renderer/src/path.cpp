@@ -78,7 +78,7 @@ std::size_t Path::flattened_size(double tolerance) const {
 }
 
 Path::Flat Path::flatten(double tolerance) const {
-  if (!(tolerance > 0)) throw std::invalid_argument("Path::flatten: tolerance must be positive");
+  if (!(tolerance > 0)) throw DrawError("Path::flatten: tolerance must be positive");
   Flat out;
   std::size_t k = 0;
   Vec2 cur{};

@@ -23,7 +23,7 @@ void add(std::vector<Scene::Item>& items, Scene::Item&& it, const std::shared_pt
   items.push_back(std::move(it));
 }
 
-[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
+[[noreturn]] void bad(const std::string& what) { throw DrawError(what); }
 
 std::string num(double v) {
   char buf[32];

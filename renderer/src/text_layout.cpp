@@ -92,7 +92,7 @@ std::vector<std::string> font_fallback(const TextStyle& style) {
 namespace detail {
 namespace {
 
-[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
+[[noreturn]] void bad(const std::string& what) { throw DrawError(what); }
 
 struct CodePoint {
   char32_t c;

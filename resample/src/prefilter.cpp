@@ -81,7 +81,7 @@ Solver make_solver(const SampledKernel& h, Edge edge, long n) {
     s.l[static_cast<size_t>(i)] = li;
     s.d[static_cast<size_t>(i)] = diag - (i == 0 ? 0 : li * s.g);
     if (std::abs(s.d[static_cast<size_t>(i)]) < 1e-12)
-      throw std::invalid_argument("interpolating prefilter: the system for " + std::to_string(n) +
+      throw ResampleError("interpolating prefilter: the system for " + std::to_string(n) +
                                   " samples is singular");
   }
   return s;
@@ -147,17 +147,17 @@ void for_each_line(long count, int threads, F&& work) {
 SampledKernel sampled_kernel(const Kernel& k) {
   for (double j = std::ceil(k.support().lo); j <= k.support().hi; j += 1)
     if (std::abs(j) >= 2 && std::abs(k(j)) > 1e-12)
-      throw std::invalid_argument("interpolating prefilter: filter " + k.name() + " is not zero at " +
+      throw ResampleError("interpolating prefilter: filter " + k.name() + " is not zero at " +
                                   num(j) + "; only kernels sampled as k(-1), k(0), k(1) are supported");
   const double km = k(-1), k0 = k(0), kp = k(1);
   const double sum = km + k0 + kp;
-  if (!(std::abs(sum) > 1e-12)) throw std::invalid_argument("interpolating prefilter: filter " + k.name() + " sums to zero at the integers");
+  if (!(std::abs(sum) > 1e-12)) throw ResampleError("interpolating prefilter: filter " + k.name() + " sums to zero at the integers");
   SampledKernel h{km / sum, k0 / sum, kp / sum};
   std::complex<double> z1, z2;
   roots(h.right, h.centre, h.left, z1, z2);
   const double m1 = std::abs(z1), m2 = std::abs(z2);
   if (!(m1 < 1 - 1e-9 && m2 > 1 + 1e-9))
-    throw std::invalid_argument("interpolating prefilter: filter " + k.name() + " has no stable inverse: its samples (k(-1), k(0), k(1)) = (" +
+    throw ResampleError("interpolating prefilter: filter " + k.name() + " has no stable inverse: its samples (k(-1), k(0), k(1)) = (" +
                                 num(km) + ", " + num(k0) + ", " + num(kp) + ") give roots of modulus " +
                                 num(m1) + " and " + num(m2) + ", not one inside and one outside the unit circle");
   return h;

@@ -480,21 +480,21 @@ void check_range(const ImageView& src, const AxisWeights& ax, const AxisWeights&
                 "resample: %s values up to %.9g would overflow a float through the filter's weights (their absolute "
                 "sums reach %.6g x %.6g); at most %.3g can be resampled",
                 what, double(peak), largest_abs_sum(ax), largest_abs_sum(ay), limit);
-  throw std::invalid_argument(buf);
+  throw ResampleError(buf);
 }
 
 }  // namespace
 
 void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const ResampleOptions& opt) {
   if (src_in.width < 1 || src_in.height < 1 || src_in.channels < 1)
-    throw std::invalid_argument("resample: the source image is empty");
+    throw ResampleError("resample: the source image is empty");
   if (!src_in.data || src_in.row_stride < src_in.row_length())
-    throw std::invalid_argument("resample: the source's rows are shorter than its width");
-  if (dst.width < 1 || dst.height < 1) throw std::invalid_argument("resample: the output size is zero");
+    throw ResampleError("resample: the source's rows are shorter than its width");
+  if (dst.width < 1 || dst.height < 1) throw ResampleError("resample: the output size is zero");
   if (dst.channels != src_in.channels)
-    throw std::invalid_argument("resample: the output must have the source's channel count");
+    throw ResampleError("resample: the output must have the source's channel count");
   if (dst.pixels.size() != static_cast<size_t>(dst.height) * dst.row_stride())
-    throw std::invalid_argument("resample: pixel buffer size does not match the image size");
+    throw ResampleError("resample: pixel buffer size does not match the image size");
   const int threads = worker_count(opt.threads);
   Image coefficients;
   ImageView src = src_in;
@@ -506,7 +506,7 @@ void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const R
     prefilter(coefficients, k, opt.edge, threads);
     src = coefficients.view();
     if (finite && !all_finite(src))
-      throw std::invalid_argument("resample: source values this large overflow a float in the interpolating prefilter");
+      throw ResampleError("resample: source values this large overflow a float in the interpolating prefilter");
   }
   Plan p{src, dst, axis_weights(k, src.width, dst.width), axis_weights(k, src.height, dst.height), opt.edge, src.channels,
          kStreamingStores && dst.pixels.size() * sizeof(float) > (size_t(32) << 20), {}};
@@ -525,12 +525,12 @@ void resample_into(const ImageView& src_in, Image& dst, const Kernel& k, const R
 
 void resample_into(const Image& src, Image& dst, const Kernel& k, const ResampleOptions& opt) {
   if (src.pixels.size() != static_cast<size_t>(src.height) * src.row_stride())
-    throw std::invalid_argument("resample: pixel buffer size does not match the image size");
+    throw ResampleError("resample: pixel buffer size does not match the image size");
   resample_into(src.view(), dst, k, opt);
 }
 
 Image resample(const Image& src, int width, int height, const Kernel& k, const ResampleOptions& opt) {
-  if (width < 1 || height < 1) throw std::invalid_argument("resample: the output size is zero");
+  if (width < 1 || height < 1) throw ResampleError("resample: the output size is zero");
   Image dst(width, height, src.channels);
   dst.copy_metadata_from(src);
   resample_into(src, dst, k, opt);

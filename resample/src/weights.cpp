@@ -63,7 +63,7 @@ AxisWeights axis_weights(const Kernel& k, int src, int dst) {
       sumabs += std::abs(v);
     }
     if (!(std::abs(sum) > 1e-12 * sumabs) || !std::isfinite(sum))
-      throw std::invalid_argument("filter " + k.name() + ": its weights sum to zero at output pixel " +
+      throw ResampleError("filter " + k.name() + ": its weights sum to zero at output pixel " +
                                   std::to_string(i));
     size_t a = 0, b = w.size();
     while (a + 1 < b && w[a] == 0) ++a;

@@ -1,6 +1,7 @@
 // Arc length: the memo's polygon method and adaptive Gauss-Kronrod with a safeguarded
 // Newton inverse (see arclength.hpp).
 #include <splinefig/spline/arclength.hpp>
+#include <splinefig/spline/curve.hpp>
 #include <splinefig/spline/segment.hpp>
 
 #include <algorithm>
@@ -196,7 +197,7 @@ double parameter_at_length(const Curve& c, const ArcLength& a, double s) {
 }
 
 std::vector<double> evenly_spaced_parameters(const Curve& c, std::size_t count) {
-  if (count < 2) throw std::invalid_argument("evenly spaced points: count must be at least 2");
+  if (count < 2) throw CurveError("evenly spaced points: count must be at least 2");
   const ArcLength a = arc_length(c);
   const double L = a.total(), T = static_cast<double>(c.segments());
   std::vector<double> t(count);
@@ -225,7 +226,7 @@ double polygon_length(const Curve& c, int grain) {
 }
 
 std::vector<double> polygon_evenly_spaced_parameters(const Curve& c, int grain, std::size_t count) {
-  if (count < 2) throw std::invalid_argument("evenly spaced points: count must be at least 2");
+  if (count < 2) throw CurveError("evenly spaced points: count must be at least 2");
   const Points p = sample(c, grain);
   std::vector<double> cum(p.size(), 0.0);
   for (std::size_t j = 1; j < p.size(); ++j) {

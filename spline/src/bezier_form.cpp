@@ -1,5 +1,6 @@
 // Change of basis from the power form of a piece to its Bezier control points.
 #include <splinefig/spline/bezier_form.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include <splinefig/spline/segment.hpp>
 
@@ -19,7 +20,7 @@ double binomial(int n, int k) {
 
 Points bezier_from_power(std::span<const double> ascending, int degree, int dim) {
   if (degree < 0 || dim < 1 || ascending.size() != static_cast<std::size_t>((degree + 1) * dim))
-    throw std::invalid_argument("bezier_from_power: need (degree+1)*dim coefficients");
+    throw CurveError("bezier_from_power: need (degree+1)*dim coefficients");
   Points out(dim, static_cast<std::size_t>(degree + 1));
   for (int j = 0; j <= degree; ++j)
     for (int k = 0; k <= j; ++k) {

@@ -24,7 +24,7 @@ Ends parse_ends(std::string_view s) {
   if (s == "open") return Ends::open;
   if (s == "double" || s == "doubled") return Ends::doubled;
   if (s == "closed") return Ends::closed;
-  throw std::invalid_argument("unknown end mode '" + std::string(s) + "' (known: open, double, closed)");
+  throw SpecError("unknown end mode '" + std::string(s) + "' (known: open, double, closed)");
 }
 
 const char* to_string(Ends e) {

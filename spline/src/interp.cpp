@@ -1,5 +1,6 @@
 // The "1 4 1" systems of seed 003 solved by tridiagonal elimination, and the Bezier pieces.
 #include <splinefig/spline/interp.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include <algorithm>
 #include <cassert>
@@ -50,7 +51,7 @@ void solve_unit_tridiagonal(double first, double middle, double last, std::size_
 }
 
 [[noreturn]] void too_few_points(const Points& data, std::size_t minimum, const char* what) {
-  throw std::invalid_argument(std::string(what) + " interpolation needs at least " + std::to_string(minimum) +
+  throw CurveError(std::string(what) + " interpolation needs at least " + std::to_string(minimum) +
                               " data points, got " + std::to_string(data.size()));
 }
 
@@ -84,7 +85,7 @@ Interpolant interpolate_clamped(const Points& data, std::span<const double> v, s
   require_points(data, 2, "clamped");
   const std::size_t n = data.size() - 1, dim = static_cast<std::size_t>(data.dim);
   if (v.size() != dim || w.size() != dim)
-    throw std::invalid_argument("clamped interpolation: end velocities need " + std::to_string(dim) +
+    throw CurveError("clamped interpolation: end velocities need " + std::to_string(dim) +
                                 " coordinates (the data's dimension)");
   // Unknowns B_0..B_n: 2B_0 + B_1 = 3S_0 + v, B_{i-1} + 4B_i + B_{i+1} = 6S_i, B_{n-1} + 2B_n = 3S_n - w.
   Points rhs(data.dim, n + 1);
@@ -103,7 +104,7 @@ Interpolant interpolate_periodic(const Points& data) {
   const std::size_t n = data.size() - 1, dim = static_cast<std::size_t>(data.dim);
   for (std::size_t c = 0; c < dim; ++c)
     if (data.coords[c] != data.coords[n * dim + c])
-      throw std::invalid_argument("periodic interpolation: the last data point must repeat the first");
+      throw CurveError("periodic interpolation: the last data point must repeat the first");
   // Unknowns B_0..B_{n-1} on a cycle: B_{i-1} + 4B_i + B_{i+1} = 6S_i, indices mod n.
   Points x(data.dim, n);
   if (n == 2) {
@@ -138,7 +139,7 @@ Interpolant interpolate_periodic(const Points& data) {
 }
 
 Points relaxed_joints(const Points& control) {
-  if (control.size() < 2) throw std::invalid_argument("a relaxed B-spline needs at least 2 control points");
+  if (control.size() < 2) throw CurveError("a relaxed B-spline needs at least 2 control points");
   const std::size_t n = control.size() - 1, dim = static_cast<std::size_t>(control.dim);
   Points s = control;
   for (std::size_t i = 1; i < n; ++i)
@@ -191,7 +192,7 @@ void evaluate(const Interpolant& s, double t, int derivative, std::span<double> 
 }
 
 Points sample(const Interpolant& s, int grain) {
-  if (grain < 1) throw std::invalid_argument("grain must be at least 1, got " + std::to_string(grain));
+  if (grain < 1) throw CurveError("grain must be at least 1, got " + std::to_string(grain));
   const std::size_t n = s.pieces(), dim = static_cast<std::size_t>(s.data.dim);
   const std::size_t g = static_cast<std::size_t>(grain);
   Points out(s.data.dim, n * g + 1);
@@ -218,7 +219,7 @@ Points sample(const Interpolant& s, int grain) {
 }
 
 Interpolant relaxed_basis(int n) {
-  if (n < 1) throw std::invalid_argument("relaxed basis functions need n >= 1, got " + std::to_string(n));
+  if (n < 1) throw CurveError("relaxed basis functions need n >= 1, got " + std::to_string(n));
   const std::size_t m = static_cast<std::size_t>(n) + 1;
   Points unit(n + 1, m);
   for (std::size_t k = 0; k < m; ++k) unit.coords[k * m + k] = 1;

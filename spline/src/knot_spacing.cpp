@@ -1,5 +1,6 @@
 // Non-uniformly spaced Catmull-Rom pieces in Hermite form.
 #include <splinefig/spline/knot_spacing.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include "open_cubic_sampling.hpp"
 
@@ -108,7 +109,7 @@ Points spaced_catmull_rom_curve(const Points& knots, double alpha, int grain, in
   const std::vector<double> tau = knot_parameters(knots, alpha);
   for (std::size_t j = 1; j < tau.size(); ++j)
     if (!std::isfinite(tau[j]))
-      throw std::invalid_argument("the knot parameters overflow at knot " + std::to_string(j + 1) +
+      throw CurveError("the knot parameters overflow at knot " + std::to_string(j + 1) +
                                   ": the knots are too far apart for this spacing");
   return detail::sample_open_cubic("Catmull-Rom", knots.dim, knots.size(), grain,
                                    [&](std::size_t i, double u, std::span<double> out) {
@@ -120,7 +121,7 @@ Points sample_spaced(const Curve& c, double alpha, int grain, int derivative) {
   const bool catmull_rom = c.basis.degree == 3 && c.basis.family == "cardinal" && c.basis(2, 0) == -0.5 &&
                            c.basis(2, 2) == 0.5;
   if (!catmull_rom)
-    throw std::invalid_argument("knot spacing applies to the Catmull-Rom basis only, not " + c.basis.spec);
+    throw CurveError("knot spacing applies to the Catmull-Rom basis only, not " + c.basis.spec);
   return spaced_catmull_rom_curve(c.control, alpha, grain, derivative);
 }
 

@@ -1,5 +1,6 @@
 // Barycentric Lagrange interpolation.
 #include <splinefig/spline/lagrange.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include <algorithm>
 #include <cassert>
@@ -10,7 +11,7 @@ namespace splinefig {
 
 LagrangePolynomial lagrange(std::vector<double> t, Points data) {
   if (t.empty() || t.size() != data.size())
-    throw std::invalid_argument("Lagrange interpolation needs one parameter value per data point (" +
+    throw CurveError("Lagrange interpolation needs one parameter value per data point (" +
                                 std::to_string(t.size()) + " for " + std::to_string(data.size()) + ")");
   const std::size_t n = t.size();
   std::vector<double> w(n, 1.0);
@@ -19,7 +20,7 @@ LagrangePolynomial lagrange(std::vector<double> t, Points data) {
       if (j == k) continue;
       const double d = t[k] - t[j];
       if (d == 0)
-        throw std::invalid_argument("Lagrange interpolation: parameter values " + std::to_string(j) + " and " +
+        throw CurveError("Lagrange interpolation: parameter values " + std::to_string(j) + " and " +
                                     std::to_string(k) + " coincide");
       w[k] /= d;
     }

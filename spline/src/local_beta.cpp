@@ -1,6 +1,7 @@
 // Beta-spline weights as functions of u through blended shape parameters, differentiated
 // exactly by second-order forward mode (a value with its first two u-derivatives).
 #include <splinefig/spline/local_beta.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include "open_cubic_sampling.hpp"
 
@@ -61,27 +62,27 @@ double quintic_blend(double u, int derivative) {
 
 void validate_local_betas(const Points& knots, std::span<const ShapeParameters> betas) {
   if (betas.size() != knots.size())
-    throw std::invalid_argument("local betas: " + std::to_string(betas.size()) + " (b1, b2) pairs for " +
+    throw CurveError("local betas: " + std::to_string(betas.size()) + " (b1, b2) pairs for " +
                                 std::to_string(knots.size()) + " knots (one per knot)");
   for (std::size_t j = 0; j < betas.size(); ++j)
     if (!std::isfinite(betas[j].b1) || !std::isfinite(betas[j].b2))
-      throw std::invalid_argument("local betas: knot " + std::to_string(j) + " has a non-finite b1 or b2");
+      throw CurveError("local betas: knot " + std::to_string(j) + " has a non-finite b1 or b2");
   for (std::size_t j = 0; j + 1 < betas.size(); ++j) {
     const double b1 = std::min(betas[j].b1, betas[j + 1].b1), b2 = std::min(betas[j].b2, betas[j + 1].b2);
     const double d = denominator(b1, b2);
     // d grows with b1 >= 0 and b2: its largest value between the knots is at the larger pair.
     if (!std::isfinite(denominator(std::max(betas[j].b1, betas[j + 1].b1), std::max(betas[j].b2, betas[j + 1].b2))))
-      throw std::invalid_argument("local betas: between knots " + std::to_string(j) + " and " + std::to_string(j + 1) +
+      throw CurveError("local betas: between knots " + std::to_string(j) + " and " + std::to_string(j + 1) +
                                   " b1 or b2 is too large: the denominator d overflows");
     if (!(d > 0))
-      throw std::invalid_argument("local betas: between knots " + std::to_string(j) + " and " + std::to_string(j + 1) +
+      throw CurveError("local betas: between knots " + std::to_string(j) + " and " + std::to_string(j + 1) +
                                   " the Beta-spline denominator d = b2 + 2b1^3 + 4b1^2 + 4b1 + 2 can reach 0 "
                                   "(raise b1 or b2)");
   }
   // b1 is the ratio of the velocities after and before a joint: below 0 the curve reverses there.
   for (std::size_t j = 0; j < betas.size(); ++j)
     if (betas[j].b1 < 0)
-      throw std::invalid_argument("local betas: knot " + std::to_string(j) + " has a negative b1 (b1 >= 0)");
+      throw CurveError("local betas: knot " + std::to_string(j) + " has a negative b1 (b1 >= 0)");
 }
 
 void local_beta_point(const Points& knots, std::span<const ShapeParameters> betas, std::size_t i, double u,
@@ -136,9 +137,9 @@ std::vector<ShapeParameters> extend_betas(std::span<const ShapeParameters> betas
 }
 
 Points sample_local_betas(const Curve& c, std::span<const ShapeParameters> betas, int grain, int derivative) {
-  if (c.degree() != 3) throw std::invalid_argument("local betas need a cubic curve, not " + c.basis.spec);
+  if (c.degree() != 3) throw CurveError("local betas need a cubic curve, not " + c.basis.spec);
   if (betas.size() != c.knot_count)
-    throw std::invalid_argument("local betas: " + std::to_string(betas.size()) + " (b1, b2) pairs for " +
+    throw CurveError("local betas: " + std::to_string(betas.size()) + " (b1, b2) pairs for " +
                                 std::to_string(c.knot_count) + " knots (one per knot)");
   const std::vector<ShapeParameters> all = extend_betas(betas, c.ends);
   Points out = local_beta_curve(c.control, all, grain, derivative);

@@ -1,5 +1,6 @@
 // Cox-de Boor basis functions, de Boor's algorithm, derivative curves and knot insertion.
 #include <splinefig/spline/nonuniform.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include "weight_table.hpp"
 
@@ -14,22 +15,22 @@ namespace splinefig {
 
 void validate(const BSplineCurve& c) {
   const auto count = c.control.size();
-  if (c.degree < 0) throw std::invalid_argument("B-spline degree must be >= 0, got " + std::to_string(c.degree));
+  if (c.degree < 0) throw CurveError("B-spline degree must be >= 0, got " + std::to_string(c.degree));
   const auto p = static_cast<std::size_t>(c.degree);
   if (c.control.dim < 1 || count < p + 1)
-    throw std::invalid_argument("a degree-" + std::to_string(p) + " B-spline needs at least " +
+    throw CurveError("a degree-" + std::to_string(p) + " B-spline needs at least " +
                                 std::to_string(p + 1) + " control points, got " + std::to_string(count));
   if (c.knots.size() != count + p + 1)
-    throw std::invalid_argument("a degree-" + std::to_string(p) + " B-spline with " + std::to_string(count) +
+    throw CurveError("a degree-" + std::to_string(p) + " B-spline with " + std::to_string(count) +
                                 " control points needs " + std::to_string(count + p + 1) + " knots, got " +
                                 std::to_string(c.knots.size()));
   for (std::size_t i = 0; i < c.knots.size(); ++i) {
-    if (!std::isfinite(c.knots[i])) throw std::invalid_argument("knot " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(c.knots[i])) throw CurveError("knot " + std::to_string(i) + " is not finite");
     if (i > 0 && c.knots[i] < c.knots[i - 1])
-      throw std::invalid_argument("knot " + std::to_string(i) + " is smaller than knot " + std::to_string(i - 1));
+      throw CurveError("knot " + std::to_string(i) + " is smaller than knot " + std::to_string(i - 1));
   }
   if (!(c.t_max() > c.t_min()))
-    throw std::invalid_argument("the knot vector leaves the curve an empty domain (knot p = knot count)");
+    throw CurveError("the knot vector leaves the curve an empty domain (knot p = knot count)");
 }
 
 std::vector<double> uniform_knots(std::size_t count, int degree) {
@@ -162,7 +163,7 @@ void evaluate(const BSplineCurve& c, double t, int derivative_order, std::span<d
 }
 
 Points sample(const BSplineCurve& c, int grain) {
-  if (grain < 1) throw std::invalid_argument("grain must be at least 1, got " + std::to_string(grain));
+  if (grain < 1) throw CurveError("grain must be at least 1, got " + std::to_string(grain));
   const auto p = static_cast<std::size_t>(c.degree);
   const auto dim = static_cast<std::size_t>(c.control.dim);
   const std::size_t count = c.control.size(), g = static_cast<std::size_t>(grain);

@@ -4,6 +4,7 @@
 // i and i+1) at u = 0, 1/grain, ..., (grain-1)/grain, then u = 1 of the last piece, i.e.
 // (n-3)*grain + 1 points.
 #include <splinefig/spline/points.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include <cstddef>
 #include <span>
@@ -17,9 +18,9 @@ namespace splinefig::detail {
 template <class PointAt>
 Points sample_open_cubic(const char* curve, int dim, std::size_t knots, int grain, PointAt&& point) {
   if (knots < 4)
-    throw std::invalid_argument(std::string("a ") + curve + " curve needs at least 4 knots, got " +
+    throw CurveError(std::string("a ") + curve + " curve needs at least 4 knots, got " +
                                 std::to_string(knots));
-  if (grain < 1) throw std::invalid_argument("grain must be at least 1, got " + std::to_string(grain));
+  if (grain < 1) throw CurveError("grain must be at least 1, got " + std::to_string(grain));
   const std::size_t g = static_cast<std::size_t>(grain), d = static_cast<std::size_t>(dim);
   Points out(dim, (knots - 3) * g + 1);
   std::size_t row = 0;

@@ -1,5 +1,6 @@
 // Refinement steps and limit points of seed 002 §4.16.9.
 #include <splinefig/spline/subdivision.hpp>
+#include <splinefig/spline/curve.hpp>
 
 #include <stdexcept>
 #include <string>
@@ -8,7 +9,7 @@ namespace splinefig {
 
 Points refine(const Points& polygon) {
   const std::size_t c = polygon.size(), dim = static_cast<std::size_t>(polygon.dim);
-  if (c < 3) throw std::invalid_argument("refinement needs at least 3 control points, got " + std::to_string(c));
+  if (c < 3) throw CurveError("refinement needs at least 3 control points, got " + std::to_string(c));
   Points r(polygon.dim, 2 * c - 3);
   const double* p = polygon.coords.data();
   double* o = r.coords.data();
@@ -23,7 +24,7 @@ Points refine(const Points& polygon) {
 }
 
 Points refine(const Points& polygon, int steps) {
-  if (steps < 0) throw std::invalid_argument("refinement steps must be >= 0, got " + std::to_string(steps));
+  if (steps < 0) throw CurveError("refinement steps must be >= 0, got " + std::to_string(steps));
   Points r = polygon;
   for (int k = 0; k < steps; ++k) r = refine(r);
   return r;
@@ -31,7 +32,7 @@ Points refine(const Points& polygon, int steps) {
 
 Points refine_closed(const Points& polygon) {
   const std::size_t c = polygon.size(), dim = static_cast<std::size_t>(polygon.dim);
-  if (c < 3) throw std::invalid_argument("closed refinement needs at least 3 control points, got " + std::to_string(c));
+  if (c < 3) throw CurveError("closed refinement needs at least 3 control points, got " + std::to_string(c));
   Points r(polygon.dim, 2 * c);
   const double* p = polygon.coords.data();
   for (std::size_t i = 0; i < c; ++i) {
@@ -48,7 +49,7 @@ Points refine_closed(const Points& polygon) {
 
 Points limit_points(const Points& polygon) {
   const std::size_t c = polygon.size(), dim = static_cast<std::size_t>(polygon.dim);
-  if (c < 3) throw std::invalid_argument("limit points need at least 3 control points, got " + std::to_string(c));
+  if (c < 3) throw CurveError("limit points need at least 3 control points, got " + std::to_string(c));
   Points r(polygon.dim, c - 2);
   const double* p = polygon.coords.data();
   for (std::size_t i = 1; i + 1 < c; ++i)

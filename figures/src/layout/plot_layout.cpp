@@ -110,13 +110,13 @@ std::vector<Tick> make_ticks(const AxisSpec& axis, char name, const std::array<d
     }
     return t;
   }
-  if (axis.scale == Scale::Log) return log_ticks(range[0], range[1]);
-  double target = std::clamp(std::abs(pixels) / spacing, 2.0, 12.0);
+  const bool log = axis.scale == Scale::Log;
   std::vector<Tick> ticks;
   try {
-    ticks = nice_ticks(range[0], range[1], target, axis.tick_step.value_or(0));
-  } catch (const std::invalid_argument& e) {
-    throw KeyError(std::string(1, name) + (axis.tick_step ? "_tick_step" : "_range"), e.what());
+    if (log) return log_ticks(range[0], range[1]);
+    ticks = nice_ticks(range[0], range[1], std::clamp(std::abs(pixels) / spacing, 2.0, 12.0), axis.tick_step.value_or(0));
+  } catch (const TickError& e) {
+    throw KeyError(std::string(1, name) + (axis.tick_step && !log ? "_tick_step" : "_range"), e.what());
   }
   if (axis.scale == Scale::Decibel)
     for (auto& t : ticks) t.label += " dB";

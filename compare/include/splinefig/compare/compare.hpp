@@ -47,7 +47,7 @@ inline constexpr long long kMaxPaddedPixels = 1LL << 22;
 inline constexpr long long kMaxPaddingFactor = 16;
 
 // `mask`, if given, must have the size of the union of the two windows; its first channel
-// selects the compared pixels (non-zero: compared). Throws std::invalid_argument otherwise.
+// selects the compared pixels (non-zero: compared). Throws CompareError otherwise.
 Comparison compare_images(const Image& a, const Image& b, const Options& options, const Image* mask = nullptr);
 
 // idiff's output for the comparison: "Comparing" line, size/channel lines (ours), the report

@@ -65,7 +65,8 @@ struct MetricOptions {
   InnerLoop loop = InnerLoop::fastest;
 };
 
-// Whether this build and CPU have `loop`; idiff_metrics throws std::invalid_argument for one they lack.
+// Whether this build and CPU have `loop`; idiff_metrics throws CompareError for one
+// they lack.
 bool inner_loop_available(InnerLoop loop);
 
 Metrics idiff_metrics(const Image& a, const Image& b, float failthresh, float warnthresh,

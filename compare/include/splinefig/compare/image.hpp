@@ -2,9 +2,16 @@
 // What comparison adds to splinefig::Image (image/image.hpp): windows (EXR data windows need
 // not start at 0,0, and idiff compares over the union of two), padding to a window, dropping
 // alpha.
+#include <splinefig/base/error.hpp>
 #include <splinefig/image/image.hpp>
 
 namespace splinefig::compare {
+
+// A comparison that cannot be made as asked: a mask of another size than the compared window,
+// an inner loop this build or CPU lacks.
+struct CompareError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
 
 // A window: origin and size, in absolute pixel coordinates.
 struct Window {

@@ -11,6 +11,13 @@
 
 namespace splinefig::figures {
 
+// Ticks that cannot be made for a range: more than kMaxTicks of them, or log ticks over a range
+// that is not positive and finite. The layout names the axis key it comes from (x_tick_step,
+// x_range).
+struct TickError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
+
 struct AxisMap {
   Scale scale = Scale::Linear;
   double d0 = 0, d1 = 1;  // the range as given (dB for db axes)
@@ -39,14 +46,14 @@ std::string range_problem(double lo, double hi);
 
 // Nice ticks for [lo, hi] (either order): steps 1, 2 or 5 times a power of ten, about
 // `target` of them, every tick inside the range (to 1e-9 of the step). `step` > 0 forces
-// the step. Labels print just the digits the step needs. Throws std::invalid_argument when the
+// the step. Labels print just the digits the step needs. Throws TickError when the
 // step would give more than kMaxTicks ticks; no ticks for a range without extent.
 std::vector<Tick> nice_ticks(double lo, double hi, double target, double step = 0);
 // The step nice_ticks would use.
 double nice_step(double lo, double hi, double target);
 // Decades 10^k inside [lo, hi] (lo, hi > 0), labelled "10^{k}" (label markup; 10^0 and 10^1
 // as powers too, a negative k with the minus sign U+2212); falls back to nice_ticks when the
-// range spans less than one decade. Throws std::invalid_argument unless 0 < lo, hi < inf.
+// range spans less than one decade. Throws TickError unless 0 < lo, hi < inf.
 std::vector<Tick> log_ticks(double lo, double hi);
 // A number with `decimals` digits after the point ("-0" printed as "0").
 std::string format_number(double v, int decimals);

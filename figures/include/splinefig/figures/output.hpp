@@ -12,6 +12,12 @@
 
 namespace splinefig::figures {
 
+// A dpi or scale of a figure file outside [kMinDpi, kMaxDpi] (base/limits.hpp), alone or as
+// their product.
+struct FileOptionsError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
+
 // The formats a figure is written in. A name ("png", any case) or a path's extension is read
 // into one once, where it is given (the command line); the writers take the value.
 enum class Format { png, exr, svg, pdf };
@@ -30,7 +36,7 @@ struct FigureFileOptions {
 
 // Writes `fig` to `path` as `format`. `raster` caches the rasterized scene between calls for
 // the same figure (PNG and EXR share it). Throws UnwritableFile naming the path,
-// std::invalid_argument for a dpi outside [kMinDpi, kMaxDpi] (base/limits.hpp).
+// FileOptionsError for a dpi outside [kMinDpi, kMaxDpi] (base/limits.hpp).
 void write_figure_file(const FigureScene& fig, const std::string& path, Format format,
                        const FigureFileOptions& options, std::optional<Image>& raster);
 

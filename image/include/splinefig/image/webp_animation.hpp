@@ -5,6 +5,7 @@
 // the same bytes. Frames are added one at a time (the encoder keeps the previous canvas, not
 // every frame), and the file is published atomically (write_file_atomically): a failed or
 // interrupted write leaves no partial file.
+#include <splinefig/base/error.hpp>
 #include <splinefig/image/image.hpp>
 
 #include <memory>
@@ -13,10 +14,16 @@
 
 namespace splinefig {
 
+// An animation or frame that WebP cannot hold (a side, loop count, frame delay or length out of
+// range, a frame of another size or channel count).
+struct AnimationError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
+
 class WebpAnimation {
  public:
   // An animation of width x height pixels (each side 1 .. kMaxAnimationSide, base/limits.hpp),
-  // played `loops` times (0: for ever). Throws std::invalid_argument for a size out of range.
+  // played `loops` times (0: for ever). Throws AnimationError for a size out of range.
   WebpAnimation(int width, int height, int loops = 0);
   ~WebpAnimation();
   WebpAnimation(const WebpAnimation&) = delete;
@@ -24,7 +31,7 @@ class WebpAnimation {
 
   // Appends a frame shown for `delay_ms` milliseconds (kMinFrameDelayMs .. kMaxFrameDelayMs):
   // an image of the animation's size, 3 or 4 channels (RGB, RGBA), in either encoding. Throws
-  // std::invalid_argument for a frame of another size or a delay out of range,
+  // AnimationError for a frame of another size or a delay out of range,
   // std::runtime_error with libwebp's reason when it cannot encode it.
   void add(const Image& frame, int delay_ms);
   int frames() const;

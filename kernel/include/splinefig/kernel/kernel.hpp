@@ -11,11 +11,19 @@
 //
 // The convention of the whole library: a signal is reconstructed as X(t) = sum_j x[j] k(t - j)
 // (asymmetric kernels such as a Beta-spline's keep their orientation).
+#include <splinefig/base/error.hpp>
+
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace splinefig {
+
+// A kernel that cannot be made from what it is given (no pieces, a coefficient that is not
+// finite, a Lanczos a below 1).
+struct KernelError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
 
 // The interval [lo, hi] outside which k is zero.
 struct Support {
@@ -26,7 +34,7 @@ class Kernel {
  public:
   Kernel();  // the box
 
-  // A piecewise polynomial (see the top of this file). Throws std::invalid_argument when there
+  // A piecewise polynomial (see the top of this file). Throws KernelError when there
   // are no pieces, a piece has no coefficient, or lo or a coefficient is not finite.
   static Kernel piecewise(std::string name, double lo, std::vector<std::vector<double>> pieces);
   static Kernel box();   // 1 on [-1/2, 1/2)

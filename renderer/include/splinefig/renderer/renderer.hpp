@@ -6,6 +6,7 @@
 // centre (i+0.5, j+0.5). Colours are linear-light RGBA with straight alpha at the API; the
 // image (splinefig::Image, image/image.hpp) holds premultiplied linear RGBA float32,
 // composited with Porter-Duff over. A stroke is the union of its pieces: one path never blends with itself.
+#include <splinefig/base/error.hpp>
 #include <splinefig/base/limits.hpp>
 #include <splinefig/image/image.hpp>
 #include <splinefig/kernel/kernel.hpp>
@@ -20,6 +21,13 @@
 #include <vector>
 
 namespace splinefig::render {
+
+// Something the renderer is asked to draw that cannot be drawn: a bad size, radius, style, dash
+// list, pixel filter or text (invalid UTF-8, a character no font has), or a flattening
+// tolerance that is not positive. The message names the item and the value.
+struct DrawError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
 
 struct Vec2 {
   double x = 0, y = 0;
@@ -45,7 +53,7 @@ enum class FillRule { NonZero, EvenOdd };
 // A dash pattern, checked and normalised once, where it is made: on/off lengths in pixels, each
 // finite, >= 0 and at most kMaxCoordinate, with a period (their sum) of at least kMinDashPeriod;
 // an odd list is repeated to an even one, as SVG does. Empty: a solid stroke. A bad list throws
-// std::invalid_argument naming the length or the period, so a pattern that exists is valid.
+// DrawError naming the length or the period, so a pattern that exists is valid.
 class DashPattern {
  public:
   DashPattern() = default;
@@ -82,7 +90,7 @@ struct StrokeStyle {
 // (kernel/kernel.hpp; a spline basis function through spline/basis_kernel.hpp). The box (the
 // default) is exact area coverage; otherwise a pixel's value is the shape convolved with k(x) k(y) at
 // the pixel centre, divided by (integral of k)^2, computed exactly (see docs/renderer.md).
-// Throws std::invalid_argument if `k` is not a usable pixel filter (not a polynomial, more than
+// Throws DrawError if `k` is not a usable pixel filter (not a polynomial, more than
 // 8 pieces or coefficients per piece, a zero integral).
 void validate_pixel_filter(const Kernel& k);
 
@@ -108,7 +116,7 @@ struct TextStyle {
 };
 
 // The advance width of the shaped string and the ink above (ascent) and below (descent) the
-// baseline, in pixels, unrotated. Throws std::invalid_argument for text that is not valid
+// baseline, in pixels, unrotated. Throws DrawError for text that is not valid
 // UTF-8 or a character no DejaVu face has.
 struct TextExtent {
   double width = 0, ascent = 0, descent = 0;  // pixels
@@ -153,7 +161,7 @@ class Scene {
   // Every shape and text item recorded from now on is drawn intersected with the region the
   // path encloses under `rule`, exactly (one sweep resolves shape and clip together), until
   // clear_clip() or the next set_clip. An image cannot be recorded while a clip is set, and SVG
-  // and PDF writers refuse a scene with clipped items (visit throws std::invalid_argument).
+  // and PDF writers refuse a scene with clipped items (visit throws DrawError).
   void set_clip(const Path& path, FillRule rule = FillRule::NonZero);
   void clear_clip();
 

@@ -19,7 +19,7 @@ namespace splinefig::render {
 
 // The glyph outlines of `text` in canvas pixels (y down), placed as Scene::text draws them:
 // aligned about `anchor` by style.halign/valign, then turned by style.angle about the anchor.
-// Throws std::invalid_argument for invalid UTF-8 ("text: invalid UTF-8 at byte N") or a
+// Throws DrawError for invalid UTF-8 ("text: invalid UTF-8 at byte N") or a
 // character that no DejaVu face has ("text: no DejaVu font has U+XXXX"), and
 // std::runtime_error if the style's own font file is not installed.
 Path text_path(std::string_view text, Vec2 anchor, const TextStyle& style);

@@ -28,7 +28,7 @@
 
 namespace splinefig {
 
-// k(-1), k(0), k(1) normalised by their sum. Throws std::invalid_argument when k is non-zero at
+// k(-1), k(0), k(1) normalised by their sum. Throws ResampleError when k is non-zero at
 // another integer (a wider prefilter is not implemented) or the inverse is not stable.
 struct SampledKernel {
   double left = 0, centre = 1, right = 0;  // coefficients of c_{i+1}, c_i, c_{i-1}

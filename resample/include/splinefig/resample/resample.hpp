@@ -15,6 +15,7 @@
 // the image is filtered horizontally into a small ring of rows and then vertically, in parallel
 // over bands of output rows. Every output value is computed by the same operations whatever the
 // thread count, so the result is bit-identical for any number of threads.
+#include <splinefig/base/error.hpp>
 #include <splinefig/image/image.hpp>
 #include <splinefig/kernel/kernel.hpp>
 
@@ -25,6 +26,13 @@
 #include <vector>
 
 namespace splinefig {
+
+// A resampling that cannot be done: an empty source or output, buffers that do not match their
+// sizes, weights that sum to zero, a filter the interpolating prefilter cannot invert, values
+// that overflow.
+struct ResampleError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
 
 enum class Edge { clamp, mirror, wrap, black };
 std::optional<Edge> parse_edge(std::string_view name);
@@ -43,7 +51,7 @@ struct AxisWeights {
   std::vector<float> w;
   long lo = 0, hi = 0;  // smallest and largest extended position any output reads
 };
-// Throws std::invalid_argument when the weights of some output sum to zero.
+// Throws ResampleError when the weights of some output sum to zero.
 AxisWeights axis_weights(const Kernel& k, int src, int dst);
 
 struct ResampleOptions {
@@ -53,7 +61,7 @@ struct ResampleOptions {
 };
 
 // Resamples `src` into `dst`, whose width and height give the new size; dst.channels must
-// equal src.channels and dst.pixels must be allocated. Throws std::invalid_argument for bad
+// equal src.channels and dst.pixels must be allocated. Throws ResampleError for bad
 // arguments (empty images, channel mismatch, a filter without a stable prefilter inverse).
 // The view form reads pixels held elsewhere in place (any row stride); the Image form is the
 // same computation on the image's view, so both give the same bits.

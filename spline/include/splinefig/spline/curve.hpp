@@ -27,11 +27,14 @@ namespace splinefig {
 
 enum class Ends { open, doubled, closed };
 
-// "open", "double" (or "doubled"), "closed"; throws std::invalid_argument naming the value.
+// "open", "double" (or "doubled"), "closed"; throws SpecError naming the value.
 Ends parse_ends(std::string_view s);
 const char* to_string(Ends e);
 
-// Too few knots (or none, or mixed dimensions) for the curve asked for.
+// A curve, interpolation or sampling that cannot be made from what it is given: too few knots
+// or data points (or none, or mixed dimensions), a grain or count out of range, knots out of
+// order, parameters that coincide or overflow. Every spline function but the spec parsers
+// (SpecError) throws it.
 struct CurveError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
   using ErrorOf::ErrorOf;
 };

@@ -16,7 +16,7 @@
 // points at thirds of each leg of the B-spline polygon, with S_i the midpoints of the A-frames.
 //
 // Minimum sizes: relaxed and clamped need 2 data points (n >= 1); periodic needs 3 (n >= 2,
-// two distinct points plus the repeated first one). Fewer throw std::invalid_argument.
+// two distinct points plus the repeated first one). Fewer throw CurveError.
 #include <splinefig/spline/bezier.hpp>
 #include <splinefig/spline/points.hpp>
 
@@ -37,7 +37,7 @@ struct Interpolant {
 Interpolant interpolate_relaxed(const Points& data);
 // v = P'(0), w = P'(n), each with data.dim coordinates.
 Interpolant interpolate_clamped(const Points& data, std::span<const double> v, std::span<const double> w);
-// data's last point must equal its first (std::invalid_argument otherwise).
+// data's last point must equal its first (CurveError otherwise).
 Interpolant interpolate_periodic(const Points& data);
 
 // Seed 003 §4, the relaxed uniform cubic B-spline of control points B_0..B_n (n >= 1):

@@ -45,7 +45,7 @@ void spaced_catmull_rom(const Points& knots, const std::vector<double>& tau, std
 Points spaced_catmull_rom_curve(const Points& knots, double alpha, int grain, int derivative = 0);
 
 // The same for a Catmull-Rom curve from make_curve (its end mode already applied to the
-// knots): as many points as sample(c, grain, derivative). Throws std::invalid_argument unless
+// knots): as many points as sample(c, grain, derivative). Throws CurveError unless
 // c's basis is Catmull-Rom (cardinal a = 0.5).
 Points sample_spaced(const Curve& c, double alpha, int grain, int derivative = 0);
 

@@ -20,7 +20,7 @@ struct LagrangePolynomial {
   std::vector<double> weights;  // barycentric weights
 };
 
-// Throws std::invalid_argument when sizes differ, nothing is given, or two t_k coincide.
+// Throws CurveError when sizes differ, nothing is given, or two t_k coincide.
 LagrangePolynomial lagrange(std::vector<double> t, Points data);
 
 void evaluate(const LagrangePolynomial& p, double t, std::span<double> out);

@@ -30,7 +30,7 @@ struct ShapeParameters {
   double b2 = 0;  // tension
 };
 
-// Throws std::invalid_argument naming the knots of the first piece whose parameters can make d
+// Throws CurveError naming the knots of the first piece whose parameters can make d
 // vanish, or a count mismatch (one ShapeParameters per knot).
 void validate_local_betas(const Points& knots, std::span<const ShapeParameters> betas);
 
@@ -51,7 +51,7 @@ std::vector<ShapeParameters> extend_betas(std::span<const ShapeParameters> betas
 
 // A cubic curve from make_curve (only its knots and end mode are used; its basis is replaced by
 // the continuously shaped Beta-spline) with one (b1, b2) per knot as given (c.knot_count):
-// as many points as sample(c, grain, derivative). Throws std::invalid_argument on a count
+// as many points as sample(c, grain, derivative). Throws CurveError on a count
 // mismatch, a non-cubic curve, or parameters for which the matrix does not exist.
 Points sample_local_betas(const Curve& c, std::span<const ShapeParameters> betas, int grain, int derivative = 0);
 

@@ -25,7 +25,7 @@ struct BSplineCurve {
   double t_max() const { return knots[control.size()]; }
 };
 
-// Throws std::invalid_argument naming the problem: degree < 0, too few control points
+// Throws CurveError naming the problem: degree < 0, too few control points
 // (count >= degree + 1), wrong knot count, decreasing or non-finite knots, an empty domain.
 void validate(const BSplineCurve& c);
 
@@ -59,7 +59,7 @@ void evaluate(const BSplineCurve& c, double t, int derivative, std::span<double>
 // P(t) at `grain` evenly spaced parameters in every non-empty span [t_s, t_{s+1}) of the domain,
 // then P(t_max): (non-empty spans) * grain + 1 points, each from its p+1 basis functions
 // (Cox-de Boor) on that span. On uniform knots this is the memo's sampling of the uniform
-// B-spline of degree p (grain >= 1, else std::invalid_argument).
+// B-spline of degree p (grain >= 1, else CurveError).
 Points sample(const BSplineCurve& c, int grain);
 
 // Boehm's knot insertion: the same curve with one more knot at t (t_min <= t <= t_max) and one
