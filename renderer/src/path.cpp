@@ -56,7 +56,7 @@ int cubic_pieces(Vec2 p0, Vec2 p1, Vec2 p2, Vec2 p3, double tol) {
 }  // namespace
 
 std::size_t Path::flattened_size(double tolerance) const {
-  if (!(tolerance > 0)) throw std::invalid_argument("Path::flattened_size: tolerance must be positive");
+  if (!(tolerance > 0)) throw DrawError("Path::flattened_size: tolerance must be positive");
   std::size_t n = 0, k = 0;
   Vec2 cur{};
   for (Verb v : verbs_) {

@@ -69,6 +69,7 @@ TEST_CASE("a bad argument to any library is its library's error type, whose kind
   CHECK(throws_typed<AnimationError>([] { WebpAnimation(0, 10); }));
   CHECK(throws_typed<render::DrawError>([] { render::Scene(10, 10).fill_circle({5, 5}, -1, {0, 0, 0, 1}); }));
   CHECK(throws_typed<render::DrawError>([] { render::Path().flatten(0); }));
+  CHECK(throws_typed<render::DrawError>([] { render::Path().flattened_size(0); }));
   CHECK(throws_typed<render::DrawError>([] { render::text_path("\xff", {0, 0}, render::TextStyle{}); }));
   CHECK(throws_typed<ResampleError>([] { resample(Image(2, 2, 1), 0, 0, Kernel::box()); }));
   CHECK(throws_typed<compare::CompareError>([] {
