@@ -8,7 +8,7 @@
 //   B:      one open polyline of 1,000,000 points (a 3:4 Lissajous), width 1.5, round joins.
 //   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).
 //   R:      one random self-crossing polyline, width 1, butt caps, miter joins: points uniform
-//           on the canvas (R1k, R10k, R30k: 10^3, 10^4, 3*10^4 points; the crossings grow as
+//           on the canvas (R1k, R10k, R30k, R100k: 10^3 to 10^5 points; the crossings grow as
 //           n^2), or a random walk with normal steps (sigma 8) reflected into the canvas (Rw100k,
 //           Rw1M: 10^5 and 10^6 points).
 // After the runs it prints the ratio table: splinefig's one-thread CPU time against Cairo's,
@@ -159,6 +159,7 @@ Workload make_workload(char id) {
     case 'u': return uniform_polyline(1000);
     case 'v': return uniform_polyline(10000);
     case 'x': return uniform_polyline(30000);
+    case 'y': return uniform_polyline(100000);
     case 'w': return walk_polyline(100000);
     case 'W': return walk_polyline(1000000);
     default: return walks();
@@ -174,9 +175,10 @@ const Workload& workload(char id) {
 
 // ---- splinefig -------------------------------------------------------------------------
 splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
-                         sr::Color ink = {0, 0, 0, 1}) {
+                         sr::Color ink = {0, 0, 0, 1}, double tolerance = sr::kDefaultCoverageTolerance) {
   sr::Scene s(size, size, bg);
   s.set_max_crossings(INFINITY);  // R30k crosses about 4e8 times, past the default work limit
+  s.set_coverage_tolerance(tolerance);
   sr::StrokeStyle st;
   st.width = w.width;
   st.join = w.join;
@@ -325,10 +327,10 @@ constexpr const char* kBlend2DAbsent =
     "Blend2D absent: configure with -DSPLINEFIG_BLEND2D_SOURCE_DIR=<blend2d checkout> (bench/CMakeLists.txt)";
 
 // ---- timed benchmarks ------------------------------------------------------------------
-void BM_splinefig(benchmark::State& state, char id, int threads) {
+void BM_splinefig(benchmark::State& state, char id, int threads, double tolerance) {
   const Workload& w = workload(id);
   for (auto _ : state) {
-    splinefig::Image img = draw_splinefig(w, threads);
+    splinefig::Image img = draw_splinefig(w, threads, kSize, {1, 1, 1, 1}, {0, 0, 0, 1}, tolerance);
     benchmark::DoNotOptimize(img.pixels.data());
   }
 }
@@ -492,11 +494,16 @@ void BM_accuracy(benchmark::State& state, int impl, bool walks) {
 
 void register_all() {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const double tol = sr::kDefaultCoverageTolerance;
   for (auto [id, name] : {std::pair{'1', "A1"}, {'3', "A3"}, {'B', "B"}, {'C', "C"}, {'u', "R1k"}, {'v', "R10k"},
-                          {'x', "R30k"}, {'w', "Rw100k"}, {'W', "Rw1M"}}) {
+                          {'x', "R30k"}, {'y', "R100k"}, {'w', "Rw100k"}, {'W', "Rw1M"}}) {
     std::string base = std::string("stroke/") + name + "/";
-    benchmark::RegisterBenchmark((base + "splinefig").c_str(), BM_splinefig, id, 1)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_splinefig, id, all)->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark((base + "splinefig").c_str(), BM_splinefig, id, 1, tol)->Unit(benchmark::kMillisecond);
+    // The exact sweep of the outline only (coverage tolerance 0), where the default resolves
+    // dense bands from the pieces.
+    if (id != '1' && id != '3' && id != 'B')
+      benchmark::RegisterBenchmark((base + "splinefig-exact").c_str(), BM_splinefig, id, 1, 0.0)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_splinefig, id, all, tol)->Unit(benchmark::kMillisecond)->UseRealTime();
     benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_cairo, id)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_agg, id)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "blend2d").c_str(), BM_blend2d, id)->Unit(benchmark::kMillisecond);

@@ -95,6 +95,15 @@ struct BoxBand {
     for (int i = 0; i < n; ++i) rows[static_cast<std::size_t>(i)].begin(static_cast<double>(first_row + i));
   }
   BoxRow& row(int canvas_row) { return rows[static_cast<std::size_t>(canvas_row - top)]; }
+  // Back to the state begin() left: every accumulator zero (a strip abandoned part way).
+  void clear() {
+    for (int i = 0; i < count; ++i) {
+      BoxRow& r = rows[static_cast<std::size_t>(i)];
+      if (r.cmax >= r.cmin)
+        std::fill(r.acc.begin() + r.cmin, r.acc.begin() + std::min(r.cmax + 2, r.width + 2), 0.0);
+      r.begin(r.y0);
+    }
+  }
   void edge(double xa, double ya, double xb, double yb, double s) {
     int r = static_cast<int>(ya);  // ya >= top >= 0: truncation is floor
     if (r + 1 >= yb) {             // within one row: the common case

@@ -142,6 +142,15 @@ void Scene::set_max_crossings(double crossings) {
   max_crossings_ = crossings;
 }
 
+void Scene::set_coverage_tolerance(double tolerance) {
+  if (!(tolerance >= 0 && tolerance <= 1)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "Scene: coverage tolerance %g is not in [0, 1] (0: exact)", tolerance);
+    bad(buf);
+  }
+  tolerance_ = tolerance;
+}
+
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 Scene::~Scene() = default;

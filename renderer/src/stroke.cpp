@@ -13,6 +13,28 @@ struct Segment {
   double len;
 };
 
+// The outer side of a join that turns (dt = cos of the turn): up to the miter tip, a bevel, or
+// the arc of a round join. A round join whose miter tip is within the arc tolerance of the arc
+// (h (1/cos(theta/2) - 1) <= tol, e.g. the tiny turns of a densely sampled curve) is drawn as
+// that tip too. The outline and the pieces (stroke_pieces) take the same decision.
+enum class OuterJoin { Tip, Bevel, Arc };
+OuterJoin outer_join(const StrokeStyle& style, double h, double dt) {
+  const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1 + dt)));
+  const bool miter_ok = cos_half > 0 && 1.0 / cos_half <= style.miter_limit;
+  if ((style.join == Join::Miter && miter_ok) ||
+      (style.join == Join::Round && cos_half > 0.5 && h * (1.0 / cos_half - 1.0) <= kArcTolerance))
+    return OuterJoin::Tip;
+  return style.join == Join::Round ? OuterJoin::Arc : OuterJoin::Bevel;
+}
+
+// The interior vertices of a round join's arc at P on side s, from segment a's outer corner
+// through the signed turn from a to b (c, dt: its sine and cosine).
+template <class Emit>
+void join_arc(Vec2 P, double h, const Segment& a, double c, double dt, double s, const Box& near, Emit&& emit) {
+  const double theta = c == 0 ? -std::numbers::pi : std::atan2(c, dt);
+  arc_interior(P, h, std::atan2(s * a.n.y, s * a.n.x), theta, near, emit);
+}
+
 class Outliner {
  public:
   Outliner(const StrokeStyle& s, ChainBuilder& out) : style_(s), h_(0.5 * s.width), out_(out) {}
@@ -62,29 +84,20 @@ void Outliner::join(Vec2 P, const Segment& a, const Segment& b, double s, std::v
     }
     return;
   }
-  const double cos_half = std::sqrt(std::max(0.0, 0.5 * (1 + dt)));
   // The miter tip M lies on both outer offset lines, so A (on the line before M) and B (on the
-  // line after it) are collinear outline vertices: the miter outline is just M. A round join
-  // whose miter tip is within the arc tolerance of the arc (h (1/cos(theta/2) - 1) <= tol, e.g.
-  // the tiny turns of a densely sampled curve) is drawn as that tip too.
-  const bool miter_ok = cos_half > 0 && 1.0 / cos_half <= style_.miter_limit;
-  if ((style_.join == Join::Miter && miter_ok) ||
-      (style_.join == Join::Round && cos_half > 0.5 && h * (1.0 / cos_half - 1.0) <= kArcTolerance)) {
-    v.push_back(P + (s * h / (1 + dt)) * (a.n + b.n));
-    return;
+  // line after it) are collinear outline vertices: the miter outline is just M.
+  switch (outer_join(style_, h, dt)) {
+    case OuterJoin::Tip: v.push_back(P + (s * h / (1 + dt)) * (a.n + b.n)); return;
+    case OuterJoin::Arc:
+      v.push_back(A);
+      join_arc(P, h, a, c, dt, s, out_.clip(), [&](Vec2 q) { v.push_back(q); });
+      v.push_back(B);
+      return;
+    case OuterJoin::Bevel:
+      v.push_back(A);
+      v.push_back(B);
+      return;
   }
-  v.push_back(A);
-  switch (style_.join) {
-    case Join::Round: {
-      const double theta = c == 0 ? -std::numbers::pi : std::atan2(c, dt);  // signed turn from a to b
-      const double a0 = std::atan2(s * a.n.y, s * a.n.x);
-      arc_interior(P, h, a0, theta, out_.clip(), [&](Vec2 q) { v.push_back(q); });
-      break;
-    }
-    case Join::Miter:  // past the limit: a bevel
-    case Join::Bevel: break;
-  }
-  v.push_back(B);
 }
 
 void Outliner::emit(const std::vector<Vec2>& v, bool reverse, bool first) {
@@ -390,6 +403,83 @@ double stroke_vertex_bound(std::span<const Vec2> pts, bool closed, const StrokeS
     total += visible_dash_count(pts, closed, style, clip) * (2 * cap + 8);
   }
   return total;
+namespace {
+
+// Appends the polygon in `poly` to `out` as a piece if it has area and may touch `clip`,
+// turned counter-clockwise (positive shoelace area in the y-down frame) if it is not.
+void add_piece(std::vector<Vec2>& poly, const Box& clip, ConvexPieces& out) {
+  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  double area2 = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 p = poly[i], q = poly[(i + 1) % poly.size()];
+    area2 += cross(p, q);
+    b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+  }
+  if (!(area2 != 0) || b.x1 <= clip.x0 || b.x0 >= clip.x1 || b.y1 <= clip.y0 || b.y0 >= clip.y1) return;
+  if (area2 < 0) std::reverse(poly.begin(), poly.end());
+  out.verts.insert(out.verts.end(), poly.begin(), poly.end());
+  out.start.push_back(out.verts.size());
+  out.bounds.push_back(b);
+}
+
+}  // namespace
+
+bool stroke_pieces(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip, ConvexPieces& out) {
+  if (!(style.width > 0) || !style.dashes.empty()) return false;
+  std::vector<Vec2> p;
+  p.reserve(pts.size());
+  for (Vec2 q : pts)
+    if (p.empty() || !(q == p.back())) p.push_back(q);
+  if (closed)
+    while (p.size() > 1 && p.back() == p.front()) p.pop_back();
+  if (p.size() < 2) return false;
+  const double h = 0.5 * style.width;
+  const std::size_t m = p.size(), segments = closed ? m : m - 1;
+  auto seg = [&](std::size_t j) { return segment(p[j % m], p[(j + 1) % m]); };
+  std::vector<Vec2> poly;
+  // The join at p[j] between segments a (into it) and b (out of it), on the outer side.
+  auto join = [&](Vec2 P, const Segment& a, const Segment& b) {
+    const double c = cross(a.d, b.d), dt = dot(a.d, b.d);
+    if (c == 0 && dt > 0) return;  // straight on
+    const double s = c < 0 || (c == 0 && dt < 0) ? 1.0 : -1.0;
+    poly.assign({P, P + (s * h) * a.n});
+    switch (outer_join(style, h, dt)) {
+      case OuterJoin::Tip: poly.push_back(P + (s * h / (1 + dt)) * (a.n + b.n)); break;
+      case OuterJoin::Arc: join_arc(P, h, a, c, dt, s, clip, [&](Vec2 q) { poly.push_back(q); }); break;
+      case OuterJoin::Bevel: break;
+    }
+    poly.push_back(P + (s * h) * b.n);
+    add_piece(poly, clip, out);
+  };
+  // A cap at P bulging towards d, n = d turned +90 degrees (Outliner::cap).
+  auto cap = [&](Vec2 P, Vec2 d, Vec2 n) {
+    switch (style.cap) {
+      case Cap::Butt: return;
+      case Cap::Square: poly.assign({P + h * n, P + h * n + h * d, P - h * n + h * d, P - h * n}); break;
+      case Cap::Round:
+        poly.assign({P + h * n});
+        arc_interior(P, h, std::atan2(n.y, n.x), -std::numbers::pi, clip, [&](Vec2 q) { poly.push_back(q); });
+        poly.push_back(P - h * n);
+        break;
+    }
+    add_piece(poly, clip, out);
+  };
+  out.verts.reserve(out.verts.size() + 8 * segments);
+  Segment prev = seg(closed ? m - 1 : 0);
+  for (std::size_t j = 0; j < segments; ++j) {
+    const Segment cur = seg(j);
+    const Vec2 a = p[j], b = p[(j + 1) % m];
+    poly.assign({a + h * cur.n, b + h * cur.n, b - h * cur.n, a - h * cur.n});
+    add_piece(poly, clip, out);
+    if (closed || j > 0) join(a, prev, cur);
+    prev = cur;
+  }
+  if (!closed) {
+    const Segment first = seg(0);
+    cap(p[m - 1], prev.d, prev.n);
+    cap(p[0], Vec2{-first.d.x, -first.d.y}, Vec2{-first.n.x, -first.n.y});
+  }
+  return true;
 }
 
 void stroke_path(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out) {

@@ -56,6 +56,22 @@ double visible_dash_count(std::span<const Vec2> pts, bool closed, const StrokeSt
 // The stroke of a path with no dashes.
 void stroke_outline(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, ChainBuilder& out);
 
+// The stroke's pieces themselves (the list above), each a convex polygon given counter-clockwise
+// in the canvas's y-down frame (positive shoelace area), for drawing a stroke whose outline
+// crosses itself too often to sweep (piece_coverage.hpp). Their vertices are the outline's:
+// the same corners, miter tips and arc points (arcs flattened as the outline's are, near `clip`),
+// so their union is the outline's nonzero region. Pieces of zero area and pieces whose bounding
+// box misses `clip` are left out. Solid strokes of at least two distinct points only: false (and
+// nothing appended) for dashes or a single point.
+struct ConvexPieces {
+  std::vector<Vec2> verts;
+  std::vector<std::size_t> start{0};  // piece i is verts[start[i], start[i + 1])
+  std::vector<Box> bounds;            // each piece's bounding box
+  std::size_t size() const { return bounds.size(); }
+  std::span<const Vec2> piece(std::size_t i) const { return {verts.data() + start[i], start[i + 1] - start[i]}; }
+};
+bool stroke_pieces(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip, ConvexPieces& out);
+
 // A long open stroke's outline in pieces that can be built independently, each as open pieces
 // of the contour (chains.hpp): the piece k covers the points [k P, (k + 1) P] (the last one up
 // to the end), P = kOutlinePiecePoints. The cut depends on the points only, so the pieces built

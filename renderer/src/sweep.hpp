@@ -81,6 +81,7 @@ class StripSweep {
     cursor_.clear();
     first_end_ = INFINITY;
     work_ = 0;
+    limit_ = budget_;
     mask_ = s.rule == FillRule::EvenOdd ? 1 : ~0;
     clip_mask_ = s.clip_rule == FillRule::EvenOdd ? 1 : ~0;
   }
@@ -95,9 +96,17 @@ class StripSweep {
   // returns false and over() is true): the strips' output is then incomplete, and the caller
   // refuses the item. The bound makes every sweep finish, whatever the estimate made before
   // it saw (work_estimate.hpp bounds only crossings of chains through whole bands).
-  void set_budget(std::uint64_t units) { budget_ = units; }
+  void set_budget(std::uint64_t units) { budget_ = limit_ = units; }
   std::uint64_t work() const { return work_; }
-  bool over() const { return work_ > budget_; }
+  bool over() const { return work_ > limit_; }
+  // A second limit, per strip: with a ratio q > 0 a strip also stops once its own work passes
+  // q times its chain edges and spans, plus kStripSlack (a strip whose outline crosses itself
+  // far more often than it has edges: the caller resolves it another way, piece_coverage.hpp).
+  // strip_over() says the strip stopped at this limit and not at the budget. The edges and
+  // spans of a strip do not depend on where the sweep started, so neither does the verdict.
+  void set_strip_ratio(double q) { ratio_ = q; }
+  bool strip_over() const { return work_ > limit_ && work_ <= budget_; }
+  static constexpr std::uint64_t kStripSlack = 1 << 14;
 
  private:
   struct Span {
@@ -212,6 +221,8 @@ class StripSweep {
   std::size_t ic0_ = 0;              // the cluster's first index in byx_
   int left_ = 0;                     // the winding left of the cluster at the current height
   std::uint64_t work_ = 0, budget_ = ~std::uint64_t{0};  // see work()
+  std::uint64_t limit_ = ~std::uint64_t{0};              // min(budget_, the strip's limit)
+  double ratio_ = 0;                                      // see set_strip_ratio
   int mask_ = ~0, clip_mask_ = ~0;   // the fill rules as masks: nonzero ~0, even-odd 1
 };
 
@@ -348,7 +359,7 @@ void StripSweep::sweep_cluster(std::size_t c0, std::size_t c1, double y0, double
   std::size_t step = 0, ie = 0, is = 0;
   const auto greater = std::greater<>{};
   for (;;) {
-    if (work_ > budget_) return;
+    if (work_ > limit_) return;
     const double ys = step < steps_.size() ? steps_[step].y : INFINITY;
     const double ye = ie < ends_.size() ? ends_[ie].first : INFINITY;
     const double yt = is < starts_.size() ? starts_[is].first : INFINITY;
@@ -562,6 +573,7 @@ void StripSweep::rewalk(std::size_t lo, std::size_t hi, double y, Sink& sink) {
 
 template <class Sink>
 bool StripSweep::strip(double y0, double y1, Sink& sink) {
+  limit_ = budget_;  // the strip's own limit, if any, is set below from its edges
   if (over()) return false;
   if (!update_active(y0, y1)) return next_ < s_->chain_end;
   if (s_->simple) {
@@ -570,6 +582,11 @@ bool StripSweep::strip(double y0, double y1, Sink& sink) {
   }
   build_spans(y0, y1);
   if (spans_.empty()) return true;
+  if (ratio_ > 0) {
+    const double own = ratio_ * static_cast<double>(edges_ + spans_.size()) + static_cast<double>(kStripSlack);
+    const double cap = static_cast<double>(budget_ - std::min(budget_, work_));
+    limit_ = own < cap ? work_ + static_cast<std::uint64_t>(own) : budget_;
+  }
   if (y1 - y0 > 1 && edges_ > kDenseEdgesPerRow * (y1 - y0) * static_cast<double>(spans_.size())) {
     // Chains with many vertices per row: a strip a row high keeps most of them lone spans,
     // which need no event queue; the union is the same whichever strips it is resolved in.

@@ -35,7 +35,8 @@ double count_inversions(std::vector<double>& v, std::vector<double>& tmp) {
 
 }  // namespace
 
-double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, int band, double stop_at) {
+double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, int band, double stop_at,
+                             std::size_t* chains) {
   if (s.simple || s.empty() || y1 <= y0) return 0;
   const auto& ch = g.chains;
   const auto& v = g.verts;
@@ -78,6 +79,7 @@ double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, 
     active.resize(n);
     for (; next < s.chain_end && ch[next].ymin < bottom; ++next)
       if (ch[next].ymax > top) active.push_back({next, ch[next].first});
+    if (chains) *chains = active.size();
     // Chains through the whole band: a pair in one order at its top and the other at its bottom
     // crosses inside it.
     spans.clear();
@@ -118,4 +120,32 @@ double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, 
   return count;
 }
 
+double winding_area(const Geometry& g, const Shape& s, double y0, double y1) {
+  // The winding number is the sum of dir over the chains left of a point, and the dirs of the
+  // chains at any height sum to 0: so its integral over a row is -sum(dir * x) over the chains
+  // there, and over the rows the same with x integrated over y.
+  double sum = 0;
+  const auto& v = g.verts;
+  for (std::size_t c = s.chain_begin; c < s.chain_end && g.chains[c].ymin < y1; ++c) {
+    const Chain& ch = g.chains[c];
+    if (ch.ymax <= y0) continue;
+    double part = 0;
+    std::size_t lo = ch.first, hi = ch.last - 1;  // the first edge whose lower end is below y0
+    while (lo < hi) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      if (v[mid + 1].y <= y0) lo = mid + 1; else hi = mid;
+    }
+    for (std::size_t k = lo; k < ch.last; ++k) {
+      const Vec2 a = v[k], b = v[k + 1];
+      if (a.y >= y1) break;
+      const double ya = std::max(a.y, y0), yb = std::min(b.y, y1);
+      const double t = (b.x - a.x) / (b.y - a.y);
+      part += 0.5 * ((a.x + (ya - a.y) * t) + (a.x + (yb - a.y) * t)) * (yb - ya);
+    }
+    sum -= ch.dir * part;
+  }
+  return std::abs(sum);
+}
+
 }  // namespace splinefig::render::detail
+

@@ -23,6 +23,14 @@ namespace splinefig::render::detail {
 // A lower bound on the crossings of the shape's chains between rows y0 and y1, in bands of `band`
 // rows; the count stops once it reaches `stop_at` (the caller only asks whether a limit is
 // reached). A simple shape (|winding| <= 1) is swept without crossings: 0.
-double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, int band, double stop_at);
+// `chains`, if given, receives the number of chains meeting the last band looked at.
+double crossings_lower_bound(const Geometry& g, const Shape& s, int y0, int y1, int band, double stop_at,
+                             std::size_t* chains = nullptr);
+
+// The integral of the shape's winding number over the rows [y0, y1), in absolute value: for a
+// stroke (whose outline's winding is >= 0 everywhere, stroke.hpp) about the area of its pieces
+// there counted with multiplicity, so divided by the rows' area it says how many times over
+// the ink covers them.
+double winding_area(const Geometry& g, const Shape& s, double y0, double y1);
 
 }  // namespace splinefig::render::detail

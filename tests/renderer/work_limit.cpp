@@ -108,6 +108,8 @@ TEST_CASE("the crossing bound never exceeds the crossings counted pair by pair, 
 
 TEST_CASE("an item whose crossings reach the work limit is refused before it is swept, naming the first such item",
           "[renderer][work]") {
+  // Exact coverage asked for (tolerance 0): no band may be drawn from the pieces instead
+  // (piece_coverage.cpp checks the work limit there).
   std::mt19937_64 rng(7);
   const auto dense = random_points(rng, 3000, 512);  // about 4e6 crossings
   render::StrokeStyle style;
@@ -118,6 +120,7 @@ TEST_CASE("an item whose crossings reach the work limit is refused before it is 
     scene.stroke_polyline(dense, false, style, {0, 0, 0, 1});
     scene.stroke_polyline(dense, false, style, {1, 0, 0, 1});
     scene.set_max_crossings(1e5);
+    scene.set_coverage_tolerance(0);
     try {
       (void)render::rasterize(scene, threads);
       FAIL("not refused on " << threads << " threads");
@@ -138,11 +141,12 @@ TEST_CASE("an item whose crossings reach the work limit is refused before it is 
   CHECK_THROWS_AS(render::Scene(8, 8).set_max_crossings(-1), std::invalid_argument);
 }
 
-TEST_CASE("10^5 uniformly random points on 1024^2 are refused at the default limit (a quarter of an hour of sweeping)",
+TEST_CASE("10^5 uniformly random points on 1024^2 are refused at the default limit when coverage must be exact",
           "[renderer][work]") {
   std::mt19937_64 rng(11);
   render::Scene scene(1024, 1024);
   REQUIRE(scene.max_crossings() == kMaxSweepCrossings);
+  scene.set_coverage_tolerance(0);  // a quarter of an hour of sweeping
   scene.stroke_polyline(random_points(rng, 100000, 1024), false, render::StrokeStyle{}, {0, 0, 0, 1});
   CHECK_THROWS_WITH(render::rasterize(scene, 1), Catch::Contains("item 1 (stroked polyline)") &&
                                                      Catch::Contains("refused past 2.68e+08 crossings"));

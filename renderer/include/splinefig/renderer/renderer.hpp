@@ -131,6 +131,10 @@ class SceneVisitor;
 // contour. Circle markers are disks of diameter `size`: empty.
 std::vector<Vec2> marker_polygon(Marker shape, Vec2 centre, double size);
 
+// The coverage error a scene accepts by default where a stroke is resolved from its pieces
+// (Scene::set_coverage_tolerance): 1/1024 of full coverage, a quarter of an 8-bit step.
+inline constexpr double kDefaultCoverageTolerance = 1.0 / 1024;
+
 // A drawing: a display list, rasterized at once (by tiles or bands, on any number of
 // threads, with byte-identical results). Items are composited in the order added.
 class Scene {
@@ -178,6 +182,16 @@ class Scene {
   // limit).
   double max_crossings() const { return max_crossings_; }
   void set_max_crossings(double crossings);
+  // The coverage error accepted in any pixel, as a fraction of full coverage, in [0, 1]
+  // (kDefaultCoverageTolerance unless set). 0: every item is resolved by the exact sweep of its
+  // outline and refused past max_crossings. Above 0, a solid stroke (no dashes, no clip, box
+  // filter) whose outline, in some band of rows, crosses itself far more often than it has
+  // edges is resolved in that band from its pieces instead (docs/renderer.md): pixels the
+  // pieces certainly fill are 1, the others are swept exactly from the pieces that meet them.
+  // That method's error is at most 1e-9 per pixel beyond the arc flattening both share, within
+  // every tolerance above 0; the work limit still holds, counted in the same units.
+  double coverage_tolerance() const { return tolerance_; }
+  void set_coverage_tolerance(double tolerance);
 
   // Every recorded item, in drawing order, as the call that recorded it (for writers of
   // other formats: vector/).
@@ -200,9 +214,10 @@ class Scene {
   double clip_vertices_ = 0;     // the clip path's, added to each clipped item's
   // Adds an item's estimate to the scene's; std::invalid_argument naming `call` past the limit.
   void count_outline(double vertices, const char* call);
+  double tolerance_ = kDefaultCoverageTolerance;
   std::shared_ptr<const struct ClipRegion> clip_;  // scene_item.hpp
   std::unique_ptr<std::vector<Item>> items_;
-  friend Image rasterize(const Scene&, int threads);
+  friend Image rasterize(const Scene&, int threads, struct RasterReport* report);
 };
 
 // What Scene::visit reports: one call per item, with the arguments the item was recorded
@@ -222,9 +237,22 @@ class SceneVisitor {
   virtual void image(const Image& image, Vec2 p0, Vec2 p1, Scene::Sampling sampling) = 0;
 };
 
+// How rasterize resolved each item, for callers that report it (`render -v`): the items with
+// bands of rows resolved from their pieces under the coverage tolerance (Scene above).
+struct RasterReport {
+  struct Item {
+    std::size_t index = 0;   // in drawing order, from 0
+    int bands = 0;           // bands of rows the item touches
+    int piece_bands = 0;     // of those, resolved from its pieces
+  };
+  std::vector<Item> items;   // only items with piece_bands > 0, by index
+  double tolerance = 0;      // the scene's coverage tolerance
+  int band_rows = 0;         // rows of a band
+};
+
 // The picture as an RGBA image (associated alpha, channels R, G, B, A) in the scene's blend
 // space: linear light by default (Encoding::linear), sRGB-encoded for BlendSpace::srgb.
-// threads <= 0: all hardware threads.
-Image rasterize(const Scene& scene, int threads = 0);
+// threads <= 0: all hardware threads. `report`, if given, is filled in.
+Image rasterize(const Scene& scene, int threads = 0, RasterReport* report = nullptr);
 
 }  // namespace splinefig::render
