@@ -243,9 +243,11 @@ FigureScene figure_scene(const FigureSpec& spec, double scale) {
   check_scaled_canvas(spec, scale, spec.path);
   Painter p(scale, spec.font_family);
   FigureInfo info = build(spec, scale, p);
-  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter, spec.canvas.blend);
+  render::Scene scene = scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter, spec.canvas.blend,
+                                spec.canvas.coverage_tolerance);
   render::Scene raster =
-      scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter, spec.canvas.blend, true);
+      scene_of(p, info.width, info.height, spec.canvas.background, spec.canvas.filter, spec.canvas.blend,
+               spec.canvas.coverage_tolerance, true);
   return {std::move(scene), std::move(info), std::move(raster)};
 }
 

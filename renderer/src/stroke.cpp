@@ -403,6 +403,8 @@ double stroke_vertex_bound(std::span<const Vec2> pts, bool closed, const StrokeS
     total += visible_dash_count(pts, closed, style, clip) * (2 * cap + 8);
   }
   return total;
+}
+
 namespace {
 
 // Appends the polygon in `poly` to `out` as a piece if it has area and may touch `clip`,

@@ -1,5 +1,6 @@
 // A polyline whose outline crosses itself past the sweep's work limit is refused at once, naming
-// the spec, the item and the bound, instead of being swept for minutes.
+// the spec, the item and the bound, instead of being swept for minutes, when the spec asks for
+// the exact sweep everywhere (coverage_tolerance = 0).
 #include "hostile.hpp"
 
 #include <cstdio>
@@ -10,7 +11,7 @@ using namespace splinefig::hostile;
 TEST_CASE("30000 random points on 1024^2 (about 4e8 crossings, minutes of sweeping) are refused at once") {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0, 1024);
-  std::string spec = "[canvas]\nwidth = 1024\nheight = 1024\n[[polyline]]\nwidth = 1\npoints = [";
+  std::string spec = "[canvas]\nwidth = 1024\nheight = 1024\ncoverage_tolerance = 0\n[[polyline]]\nwidth = 1\npoints = [";
   char buf[64];
   for (int i = 0; i < 30000; ++i) {
     std::snprintf(buf, sizeof buf, "%s[%.3f, %.3f]", i ? ", " : "", u(rng), u(rng));
@@ -23,7 +24,7 @@ TEST_CASE("30000 random points on 1024^2 (about 4e8 crossings, minutes of sweepi
 TEST_CASE("figures --specs: a spec past the sweep's work limit, or whose output cannot be written, is named first") {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0, 1024);
-  std::string dense = "[canvas]\nwidth = 1024\nheight = 1024\n[[polyline]]\nwidth = 1\npoints = [";
+  std::string dense = "[canvas]\nwidth = 1024\nheight = 1024\ncoverage_tolerance = 0\n[[polyline]]\nwidth = 1\npoints = [";
   char buf[64];
   for (int i = 0; i < 30000; ++i) {
     std::snprintf(buf, sizeof buf, "%s[%.3f, %.3f]", i ? ", " : "", u(rng), u(rng));
@@ -50,4 +51,20 @@ TEST_CASE("figures --specs: a spec past the sweep's work limit, or whose output 
   CHECK(fs::exists(dir / "out" / "ok.png"));
   CHECK_FALSE(fs::exists(dir / "out" / "dense.png"));
   fs::remove_all(dir);
+}
+
+TEST_CASE("under the default coverage tolerance a dense polyline is drawn, and the tolerance is checked where it is read") {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 256);
+  std::string points = "[[polyline]]\nwidth = 1\npoints = [";
+  char buf[64];
+  for (int i = 0; i < 3000; ++i) {  // about 4e6 crossings
+    std::snprintf(buf, sizeof buf, "%s[%.3f, %.3f]", i ? ", " : "", u(rng), u(rng));
+    points += buf;
+  }
+  points += "]\n";
+  const std::string canvas = "[canvas]\nwidth = 256\nheight = 256\n";
+  check_renders("pieces", canvas + points);
+  for (const char* bad : {"-0.5", "1.5", "nan", "\"fine\""})
+    check_refused("bad", canvas + "coverage_tolerance = " + bad + "\n", "bad.toml:4: canvas.coverage_tolerance: ");
 }

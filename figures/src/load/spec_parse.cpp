@@ -116,6 +116,8 @@ Canvas parse_canvas(TableReader& r) {
     }
   }
   c.blend = r.choice("blend", {"linear", "srgb"}, 0) == 0 ? render::BlendSpace::linear : render::BlendSpace::srgb;
+  c.coverage_tolerance = r.non_negative("coverage_tolerance", c.coverage_tolerance);
+  if (c.coverage_tolerance > 1) r.fail("coverage_tolerance", "must be in [0, 1] (a fraction of full coverage; 0: exact)");
   r.finish();
   return c;
 }

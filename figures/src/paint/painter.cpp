@@ -152,10 +152,11 @@ void draw_text(render::Scene& scene, const TextOp& op, double s) {
 }  // namespace
 
 render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter,
-                       render::BlendSpace blend, bool snap) {
+                       render::BlendSpace blend, double coverage_tolerance, bool snap) {
   const double s = p.scale();
   render::Scene scene(width, height, background, filter);
   scene.set_blend_space(blend);
+  scene.set_coverage_tolerance(coverage_tolerance);
   for (std::size_t i = 0; i < p.ops().size(); ++i) {
     const Op& op = p.ops()[i];
     naming_origin(p.origin_of(i), [&] { std::visit(

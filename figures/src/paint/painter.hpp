@@ -103,6 +103,6 @@ Vec2 raster_size(const Raster& r);
 // The display list at the painter's scale as a scene of the given size (pixels).
 // `snap`: the hairlines on the pixel grid (raster output).
 render::Scene scene_of(const Painter& p, int width, int height, Color background, const Kernel& filter,
-                       render::BlendSpace blend, bool snap = false);
+                       render::BlendSpace blend, double coverage_tolerance, bool snap = false);
 
 }  // namespace splinefig::figures::detail

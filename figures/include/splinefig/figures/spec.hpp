@@ -63,6 +63,9 @@ struct Canvas {
   // sRGB-encoded values, as SVG and PDF viewers and browsers blend (the PNG then looks like the
   // figure's SVG and PDF).
   render::BlendSpace blend = render::BlendSpace::linear;
+  // The coverage error accepted in a pixel where a dense stroke is drawn from its pieces, in
+  // [0, 1]; 0 asks for the exact sweep everywhere (render::Scene::set_coverage_tolerance).
+  double coverage_tolerance = render::kDefaultCoverageTolerance;
 };
 
 // A stroke's look: width in pixels at 1x, colour, joins, caps and dashes.
