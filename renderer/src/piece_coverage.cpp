@@ -37,6 +37,9 @@ void slab_extent(std::span<const Vec2> poly, double y0, SlabExtent& e) {
 
 // Rounding margin of the inner intervals (see the header).
 constexpr double kInnerMargin = 1e-9;
+// The grid the inner intervals' starts are rounded up to, in points per pixel (a power of 2:
+// q / kGrid is exact).
+constexpr int kGrid = 16;
 
 }  // namespace
 
@@ -98,31 +101,71 @@ void PieceCoverage::row(int r, const std::uint32_t* ids, std::size_t n, BoxBand&
     }
   }
   if (s.outer.empty()) return;
-  std::sort(s.outer.begin(), s.outer.end(), [](const Scratch::Outer& a, const Scratch::Outer& b) {
-    return a.x0 < b.x0 || (a.x0 == b.x0 && a.piece < b.piece);
-  });
-  // Columns meeting a piece: 1; then columns inside the inner intervals' union: 2.
+  // The outer intervals by the column they start in (a counting sort: a run [a, b) of whole
+  // columns meets those with x0 < b, which is floor(x0) < b), and the columns they meet (a
+  // difference array): state 1.
   auto& st = s.state;
-  const int cmin = static_cast<int>(std::floor(s.outer.front().x0));
-  int cmax = cmin;
-  for (std::size_t k = 0; k < s.outer.size();) {
-    double a = s.outer[k].x0, e = s.outer[k].x1;
-    for (++k; k < s.outer.size() && s.outer[k].x0 <= e; ++k) e = std::max(e, s.outer[k].x1);
-    const int c0 = static_cast<int>(std::floor(a)), c1 = std::min(static_cast<int>(std::ceil(e)), width_);
-    for (int c = c0; c < c1; ++c) st[static_cast<std::size_t>(c)] = 1;
+  auto& count = s.count;
+  count.assign(static_cast<std::size_t>(width_) + 2, 0);
+  int cmin = width_, cmax = 0;
+  for (const Scratch::Outer& o : s.outer) {
+    const int c0 = static_cast<int>(o.x0), c1 = std::min(static_cast<int>(std::ceil(o.x1)), width_);
+    ++count[static_cast<std::size_t>(c0) + 1];
+    cmin = std::min(cmin, c0);
     cmax = std::max(cmax, c1);
   }
-  // A column is solid when each sub-slab's inner intervals cover it: state 1 + k after k.
+  for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+  s.sorted.resize(s.outer.size());
+  for (const Scratch::Outer& o : s.outer) s.sorted[count[static_cast<std::size_t>(o.x0)]++] = o;
+  s.outer.swap(s.sorted);
+  auto& diff = s.count;  // reused: count's work is done
+  std::fill(diff.begin() + cmin, diff.begin() + cmax + 1, 0);
+  for (const Scratch::Outer& o : s.outer) {
+    ++diff[static_cast<std::size_t>(o.x0)];
+    --diff[static_cast<std::size_t>(std::min(static_cast<int>(std::ceil(o.x1)), width_))];
+  }
+  for (int c = cmin, open = 0; c < cmax; ++c) {
+    open += diff[static_cast<std::size_t>(c)];
+    if (open > 0) st[static_cast<std::size_t>(c)] = 1;
+  }
+  // A column is solid when each sub-slab's inner intervals cover it: state 1 + k after k. The
+  // union of a sub-slab's intervals is found on a grid of 1/kGrid px: each interval's start
+  // rounded up to it (so the union found lies inside the true one), the farthest end kept per
+  // grid point, then one pass along the grid.
+  auto& reach = s.reach;
+  if (reach.size() != static_cast<std::size_t>(width_) * kGrid + 1)
+    reach.assign(static_cast<std::size_t>(width_) * kGrid + 1, -INFINITY);
   for (int slab = 0; slab < kSubSlabs; ++slab) {
     auto& in = s.inner[static_cast<std::size_t>(slab)];
-    std::sort(in.begin(), in.end());
-    for (std::size_t k = 0; k < in.size();) {
-      double a = in[k].first, e = in[k].second;
-      for (++k; k < in.size() && in[k].first <= e; ++k) e = std::max(e, in[k].second);
+    if (in.empty()) continue;
+    std::size_t qlo = reach.size(), qhi = 0;
+    for (const auto& [lo, hi] : in) {
+      const std::size_t q = static_cast<std::size_t>(std::ceil(lo * kGrid));
+      if (q >= reach.size()) continue;
+      reach[q] = std::max(reach[q], hi);
+      qlo = std::min(qlo, q);
+      qhi = std::max(qhi, q);
+    }
+    double a = 0, e = -INFINITY;
+    auto certify = [&] {
       const int c0 = static_cast<int>(std::ceil(a)), c1 = static_cast<int>(std::floor(e));
       for (int c = c0; c < c1; ++c)
         if (st[static_cast<std::size_t>(c)] == 1 + slab) ++st[static_cast<std::size_t>(c)];
+    };
+    for (std::size_t q = qlo; q <= qhi && qlo <= qhi; ++q) {
+      const double end = reach[q];
+      if (end == -INFINITY) continue;
+      reach[q] = -INFINITY;
+      const double start = static_cast<double>(q) / kGrid;
+      if (start <= e) {
+        e = std::max(e, end);
+        continue;
+      }
+      certify();
+      a = start;
+      e = end;
     }
+    certify();
   }
   // Runs of solid columns: +1 at the run's left side, -1 at its right. Runs to resolve: the
   // pieces meeting the run (outer interval overlapping it), clipped to its box and swept.

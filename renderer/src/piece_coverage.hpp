@@ -53,7 +53,9 @@ class PieceCoverage {
       double x0, x1;
       std::uint32_t piece;
     };
-    std::vector<Outer> outer;
+    std::vector<Outer> outer, sorted;
+    std::vector<int> count;           // per column: a counting sort's buckets, then a difference array
+    std::vector<double> reach;        // per grid point: the farthest end of an interval starting there
     std::vector<std::uint8_t> state;  // per column: 0 empty, else 1 + the sub-slabs that fill it
     SlabExtent extent;
     std::vector<std::uint32_t> live;
