@@ -450,9 +450,12 @@ class Scene:
     "#rrggbb[aa]" (sRGB) or 3 or 4 linear-light floats with straight alpha."""
 
     def __init__(self, width: int, height: int, *, background: Any = (1.0, 1.0, 1.0, 1.0), filter: Any = "box",
-                 blend: str = "linear") -> None:
+                 blend: str = "linear", coverage_tolerance: float = 1.0 / 1024) -> None:
         """blend: "linear" (light, the default) or "srgb" (the encoded values blended, as AGG and
-        browsers do; render() then returns sRGB-encoded associated-alpha values)."""
+        browsers do; render() then returns sRGB-encoded associated-alpha values).
+        coverage_tolerance: the coverage error accepted in a pixel where a dense stroke is drawn
+        from its pieces, in [0, 1]; 0 sweeps every item exactly and refuses one past the work
+        limit (docs/renderer.md, "Dense strokes")."""
         w = _int(width, "width", 1, 32768)
         h = _int(height, "height", 1, 32768)
         if w * h > (1 << 28):
@@ -460,6 +463,10 @@ class Scene:
         b = _choice(blend, "blend", ("linear", "srgb"))
         self._s = _library("filter", _core.Scene, w, h, _color(background, "background"), _kernel(filter, "filter"))
         self._s.blend = b
+        t = _real(coverage_tolerance, "coverage_tolerance")
+        if not 0 <= t <= 1:
+            raise ValueError(f"coverage_tolerance: {t!r} is not in [0, 1] (0: exact)")
+        self._s.coverage_tolerance = t
         # render() runs without the interpreter's lock: adding items meanwhile from another
         # thread waits for it instead of changing the display list under the rasterizer.
         self._lock = threading.Lock()
@@ -476,6 +483,11 @@ class Scene:
     def blend(self) -> str:
         """The blend space: "linear" or "srgb"."""
         return self._s.blend
+
+    @property
+    def coverage_tolerance(self) -> float:
+        """The coverage error accepted where a dense stroke is drawn from its pieces (0: exact)."""
+        return self._s.coverage_tolerance
 
     @staticmethod
     def _path_args(vertices: Any, codes: Any) -> tuple:

@@ -203,6 +203,7 @@ void bind_render(py::module_& m) {
                     [](render::Scene& s, const std::string& b) {
                       s.set_blend_space(pick<render::BlendSpace>(b, "blend", {{"linear", render::BlendSpace::linear}, {"srgb", render::BlendSpace::srgb}}));
                     })
+      .def_property("coverage_tolerance", &render::Scene::coverage_tolerance, &render::Scene::set_coverage_tolerance)
       .def("fill_path", [](render::Scene& s, const f64array& vertices, const u8array& codes, const std::string& rule, const std::array<float, 4>& color) {
         s.fill_path(path_of(vertices, codes),
                     pick<render::FillRule>(rule, "rule", {{"nonzero", render::FillRule::NonZero}, {"evenodd", render::FillRule::EvenOdd}}),
