@@ -330,6 +330,9 @@ void check_clusters(const std::vector<CodePoint>& cps) {
 
 TextLayout layout_text(std::string_view text, const TextStyle& style) {
   TextLayout lay;
+  if (text.size() > kMaxTextBytes)
+    bad("text: " + std::to_string(text.size()) + " bytes, over the limit of 2^20 (" + std::to_string(kMaxTextBytes) +
+        ") in one text item");
   const std::vector<CodePoint> cps = decode_utf8(text);
   if (cps.empty()) return lay;
   check_clusters(cps);

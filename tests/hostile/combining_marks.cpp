@@ -32,3 +32,9 @@ TEST_CASE("more than 30 combining marks are refused in any text, enclosing marks
                 "label.toml:4: axes: text: more than 30 combining marks");
   check_renders("thirty", "title = \"a" + marks(kAcute, 30) + "b" + marks(kAcute, 30) + "\"\n" + kCanvas);
 }
+
+TEST_CASE("a text of more than 2^20 bytes is refused before it is laid out, naming the key") {
+  // 4 * 10^6 characters took 3.4 GB of glyph outlines before the outline limit could count them.
+  check_refused("long", kCanvas + "[[text]]\nat = [10, 30]\ntext = \"" + std::string((1 << 20) + 1, 'a') + "\"\n",
+                "long.toml:4: text[0]: text: 1048577 bytes, over the limit of 2^20 (1048576) in one text item");
+}

@@ -48,6 +48,8 @@ TEST_CASE("docs/limits.md states the values of the limits the code enforces") {
       {"parts of a dotted key or table header (`a.b.c`), checked by a scan before the TOML parser runs", std::to_string(f::kMaxKeyParts)},
       {"arrays and inline tables nested in each other (`[[[`, `{a = {`), checked by the same scan", std::to_string(f::kMaxValueNesting)},
       {"text and title font sizes, at 1x and after `--scale`", std::to_string(int(f::kMaxFontSize)) + " px"},
+      {"text of one item (a title, a label, a `[[text]]`, `Scene::text`, `measure_text`), in UTF-8 bytes",
+       power_of_two((long long)(f::kMaxTextBytes))},
       {"ticks per axis (explicit, or from `*_tick_step`)", std::to_string(f::kMaxTicks)},
       {"`x_marks`, `y_marks`, curve `marks`", std::to_string(f::kMaxMarks)},
       {"`--threads` (every command) and the resampler's library thread count", std::to_string(splinefig::kMaxThreads)},

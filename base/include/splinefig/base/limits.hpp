@@ -35,6 +35,12 @@ inline constexpr double kMaxSweepCrossings = double(1 << 28);
 // hairpin turns and round joins (a pen of width 2) needs about 2.2e8 (3.9 GB).
 inline constexpr double kMaxOutlineVertices = double(1 << 26);
 
+// The text of one item (a title, a label, a [[text]], Scene::text, measure_text), in UTF-8
+// bytes, checked before it is decoded: every character becomes a placed glyph and its outline,
+// under 1 KB each at the arc tolerance, so 2^20 bytes stay under about 1 GB, as the outline
+// limit does (4 * 10^6 characters took 3.4 GB before their outline could be counted).
+inline constexpr std::size_t kMaxTextBytes = std::size_t(1) << 20;
+
 // Resolution written into PNG, SVG and PDF files, in dots per inch (0 leaves it unset).
 inline constexpr double kMinDpi = 1, kMaxDpi = 10000;
 
