@@ -148,6 +148,7 @@ void PieceCoverage::row(int r, const std::uint32_t* ids, std::size_t n, BoxBand&
     }
     double a = 0, e = -INFINITY;
     auto certify = [&] {
+      if (!(e > a)) return;  // no run yet (e = -inf), or one with nothing in it
       const int c0 = static_cast<int>(std::ceil(a)), c1 = static_cast<int>(std::floor(e));
       for (int c = c0; c < c1; ++c)
         if (st[static_cast<std::size_t>(c)] == 1 + slab) ++st[static_cast<std::size_t>(c)];
