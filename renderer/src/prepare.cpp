@@ -10,6 +10,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 namespace splinefig::render::detail {
 namespace {
@@ -95,14 +97,13 @@ bool outline_in_pieces(OutlinePieces& pieces, Geometry& g, const Box& clip, Vec2
 
 }  // namespace
 
-void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, const Box& clip, Geometry& g,
-                  Prepared& out, int canvas_h, int threads) {
-  using K = Scene::Item::Kind;
-  out.paint = comp.paint(it.color);
-  if (it.kind == K::Image) {
+void prepare_item(const DrawItem& item, const ClipRegion* clip_path, const Compositor& comp, Vec2 shift, const Box& clip,
+                  Geometry& g, Prepared& out, int canvas_h, int threads) {
+  if (const auto* im = std::get_if<ImageItem>(&item)) {
     // The rows the rectangle touches (composite_raster picks the pixel centres inside).
-    out.raster = it.raster.get();
-    const double y0 = std::min(it.raster->p0.y, it.raster->p1.y), y1 = std::max(it.raster->p0.y, it.raster->p1.y);
+    out.paint = comp.paint(Color{});
+    out.raster = im;
+    const double y0 = std::min(im->p0.y, im->p1.y), y1 = std::max(im->p0.y, im->p1.y);
     out.row0 = static_cast<int>(std::clamp(std::floor(y0), 0.0, static_cast<double>(canvas_h)));
     out.row1 = static_cast<int>(std::clamp(std::ceil(y1), 0.0, static_cast<double>(canvas_h)));
     return;
@@ -110,87 +111,80 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
   Shape& s = out.shape;
   s.chain_begin = g.chains.size();
   ChainBuilder b(g, clip, shift);
-  switch (it.kind) {
-    case K::Stroke: {
-      const std::vector<Vec2>& pts = it.contours[0];
-      OutlinePieces pieces(pts, it.closed, it.stroke);
-      if (!(pieces.size() > 0 && outline_in_pieces(pieces, g, clip, shift, threads)))
-        stroke_path(pts, it.closed, it.stroke, b);
-      s.simple = it.stroke.dashes.empty() && single_segment(pts, it.closed);
-      break;
-    }
-    case K::Fill:
-      for (const auto& c : it.contours) {
-        if (c.empty()) continue;
-        b.move_to(c[0]);
-        for (std::size_t i = 1; i < c.size(); ++i) b.line_to(c[i]);
-        b.close();
-      }
-      s.rule = it.rule;
-      break;
-    case K::Disk:
-      if (it.radius > 0) disk_contour(it.centre, it.radius, b);
-      s.simple = true;
-      break;
-    case K::Ring: {
-      if (it.radius == 0) break;
-      if (it.stroke.dashes.empty()) {
-        // A circle's stroke is the annulus between radii r - h and r + h (the circle swept by the
-        // pen): two circles, the inner one reversed, or a disk when r <= h; exact, and a tenth of
-        // the work of stroking the circle's polygon with its joins.
-        const double h = 0.5 * it.stroke.width, r = it.radius;
-        if (h == 0) break;
-        disk_contour(it.centre, r + h, b);
-        if (r > h) {
-          const Vec2 c = it.centre;
-          b.move_to(Vec2{c.x + (r - h), c.y});
-          arc_interior(c, r - h, 0.0, -2 * std::numbers::pi, clip, [&](Vec2 q) { b.line_to(q); });
-          b.close();
+  std::visit(
+      [&](const auto& it) {
+        using T = std::decay_t<decltype(it)>;
+        if constexpr (std::is_same_v<T, TextItem>) {
+          out.paint = comp.paint(it.style.color);
+          // Glyph outlines flattened within the arc tolerance, filled with the nonzero rule.
+          const Path::Flat flat = it.outline->flatten(kArcTolerance);
+          for (const auto& c : flat.contours) polygon(c, b);
+          s.rule = FillRule::NonZero;
+        } else if constexpr (!std::is_same_v<T, ImageItem>) {
+          out.paint = comp.paint(it.color);
         }
-        s.simple = true;
-        break;
-      }
-      // A closed polygon on the circle, fine enough that its chords stay within the arc
-      // tolerance of the circle; then stroked like any closed path.
-      std::vector<Vec2> pts;
-      Vec2 c = it.centre;
-      pts.push_back(Vec2{c.x + it.radius, c.y});
-      arc_interior(c, it.radius, 0.0, 2 * std::numbers::pi, clip, [&](Vec2 q) { pts.push_back(q); });
-      stroke_path(pts, true, it.stroke, b);
-      break;
-    }
-    case K::Marker:
-      if (it.radius > 0) marker_contour(it.marker, it.centre, it.radius, b);
-      s.simple = true;
-      break;
-    case K::PathFill:
-    case K::PathStroke: {
-      // Flattened here, within the arc tolerance, then exactly a polygon or polylines.
-      const Path::Flat flat = it.path->flatten(kArcTolerance);
-      if (it.kind == K::PathFill) {
-        for (const auto& c : flat.contours) polygon(c, b);
-        s.rule = it.rule;
-      } else {
-        for (std::size_t i = 0; i < flat.contours.size(); ++i) stroke_path(flat.contours[i], flat.closed[i], it.stroke, b);
-        s.simple = flat.contours.size() == 1 && it.stroke.dashes.empty() && single_segment(flat.contours[0], flat.closed[0]);
-      }
-      break;
-    }
-    case K::Text: {
-      // Glyph outlines flattened within the arc tolerance, filled with the nonzero rule.
-      const Path::Flat flat = it.text->outline.flatten(kArcTolerance);
-      for (const auto& c : flat.contours) polygon(c, b);
-      s.rule = FillRule::NonZero;
-      break;
-    }
-    case K::Image: break;
-  }
+        if constexpr (std::is_same_v<T, StrokeItem>) {
+          const std::vector<Vec2>& pts = it.points;
+          OutlinePieces pieces(pts, it.closed, it.style);
+          if (!(pieces.size() > 0 && outline_in_pieces(pieces, g, clip, shift, threads)))
+            stroke_path(pts, it.closed, it.style, b);
+          s.simple = it.style.dashes.empty() && single_segment(pts, it.closed);
+        } else if constexpr (std::is_same_v<T, FillItem>) {
+          for (const auto& c : it.contours) {
+            if (c.empty()) continue;
+            b.move_to(c[0]);
+            for (std::size_t i = 1; i < c.size(); ++i) b.line_to(c[i]);
+            b.close();
+          }
+          s.rule = it.rule;
+        } else if constexpr (std::is_same_v<T, DiskItem>) {
+          if (it.radius > 0) disk_contour(it.centre, it.radius, b);
+          s.simple = true;
+        } else if constexpr (std::is_same_v<T, RingItem>) {
+          if (it.radius == 0) return;
+          if (it.style.dashes.empty()) {
+            // A circle's stroke is the annulus between radii r - h and r + h (the circle swept by the
+            // pen): two circles, the inner one reversed, or a disk when r <= h; exact, and a tenth of
+            // the work of stroking the circle's polygon with its joins.
+            const double h = 0.5 * it.style.width, r = it.radius;
+            if (h == 0) return;
+            disk_contour(it.centre, r + h, b);
+            if (r > h) {
+              const Vec2 c = it.centre;
+              b.move_to(Vec2{c.x + (r - h), c.y});
+              arc_interior(c, r - h, 0.0, -2 * std::numbers::pi, clip, [&](Vec2 q) { b.line_to(q); });
+              b.close();
+            }
+            s.simple = true;
+            return;
+          }
+          // A closed polygon on the circle, fine enough that its chords stay within the arc
+          // tolerance of the circle; then stroked like any closed path.
+          std::vector<Vec2> pts;
+          Vec2 c = it.centre;
+          pts.push_back(Vec2{c.x + it.radius, c.y});
+          arc_interior(c, it.radius, 0.0, 2 * std::numbers::pi, clip, [&](Vec2 q) { pts.push_back(q); });
+          stroke_path(pts, true, it.style, b);
+        } else if constexpr (std::is_same_v<T, MarkerItem>) {
+          if (it.size > 0) marker_contour(it.shape, it.centre, it.size, b);
+          s.simple = true;
+        } else if constexpr (std::is_same_v<T, PathFillItem>) {
+          // Flattened here, within the arc tolerance, then exactly a polygon or polylines.
+          for (const auto& c : it.path->flatten(kArcTolerance).contours) polygon(c, b);
+          s.rule = it.rule;
+        } else if constexpr (std::is_same_v<T, PathStrokeItem>) {
+          const Path::Flat flat = it.path->flatten(kArcTolerance);
+          for (std::size_t i = 0; i < flat.contours.size(); ++i) stroke_path(flat.contours[i], flat.closed[i], it.style, b);
+          s.simple = flat.contours.size() == 1 && it.style.dashes.empty() && single_segment(flat.contours[0], flat.closed[0]);
+        }
+      },
+      item);
   const std::size_t own_end = g.chains.size();
-  if (it.clip) {
+  if (clip_path) {
     // The clip path's chains join the shape's with dir scaled by kClipWeight (sweep.hpp), so the
     // sweep resolves the intersection; nothing is drawn where either is empty.
     ChainBuilder cb(g, clip, shift);
-    for (const auto& c : it.clip->path.flatten(kArcTolerance).contours) polygon(c, cb);
+    for (const auto& c : clip_path->path.flatten(kArcTolerance).contours) polygon(c, cb);
     const std::size_t own = own_end - s.chain_begin, clip_chains = g.chains.size() - own_end;
     if (own > kMaxClippedChains || clip_chains > kMaxClippedChains)
       throw std::length_error("a clipped item of " + std::to_string(own) + " chains, or a clip path of " +
@@ -198,7 +192,7 @@ void prepare_item(const Scene::Item& it, const Compositor& comp, Vec2 shift, con
                               " each (their windings share one integer)");
     for (std::size_t c = own_end; c < g.chains.size(); ++c) g.chains[c].dir *= kClipWeight;
     s.clipped = true;
-    s.clip_rule = it.clip->rule;
+    s.clip_rule = clip_path->rule;
     s.simple = false;
     if (own == 0 || clip_chains == 0) g.chains.resize(s.chain_begin);  // an empty intersection
   }

@@ -2,7 +2,7 @@
 // From a Scene's items to what the rasterizer consumes: each item's exact geometry as
 // y-monotone chains (clipped to the region that can affect the canvas).
 #include "compositor.hpp"
-#include "scene_item.hpp"
+#include "clip_region.hpp"
 #include "sweep.hpp"
 
 #include <cstdint>
@@ -11,7 +11,7 @@ namespace splinefig::render::detail {
 
 struct Prepared {
   Shape shape;
-  const Scene::Item::Raster* raster = nullptr;  // images only
+  const ImageItem* raster = nullptr;  // images only
   Paint paint;         // the item's colour, premultiplied in the canvas's blend space
   int row0 = 0, row1 = 0;  // canvas rows the item can touch, [row0, row1)
   // The rasterizer's counter of this item's sweep work on several threads; kNoWorkSlot for items
@@ -20,11 +20,11 @@ struct Prepared {
   std::uint32_t work_slot = kNoWorkSlot;
 };
 
-// `clip` is the region whose geometry matters (the canvas grown by the filter's support), in
+// `clip_path`: the item's clip (Scene::set_clip), or null. `clip` is the region whose geometry matters (the canvas grown by the filter's support), in
 // the coordinates the rasterizer works in (already shifted to the filter's cell grid).
 // `shift` is subtracted from every input point. A long stroke's outline is built in pieces on
 // up to `threads` threads (stroke.hpp: OutlinePieces); the result does not depend on `threads`.
-void prepare_item(const Scene::Item& item, const Compositor& comp, Vec2 shift, const Box& clip, Geometry& g,
-                  Prepared& out, int canvas_h, int threads = 1);
+void prepare_item(const DrawItem& item, const ClipRegion* clip_path, const Compositor& comp, Vec2 shift, const Box& clip,
+                  Geometry& g, Prepared& out, int canvas_h, int threads = 1);
 
 }  // namespace splinefig::render::detail

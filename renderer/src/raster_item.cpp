@@ -6,15 +6,16 @@
 
 namespace splinefig::render::detail {
 
-void composite_raster(const Scene::Item::Raster& r, const Compositor& comp, Image& img, int r0, int r1) {
+void composite_raster(const ImageItem& r, const Compositor& comp, Image& img, int r0, int r1) {
   const Image& src = *r.image;
+  const bool nearest = r.sampling == Sampling::Nearest;
   const double x0 = r.p0.x, y0 = r.p0.y, x1 = r.p1.x, y1 = r.p1.y;
   const double xlo = std::min(x0, x1), xhi = std::max(x0, x1), ylo = std::min(y0, y1), yhi = std::max(y0, y1);
   // Clamped while still doubles: a rectangle may reach 1e14 px past the canvas.
   auto to_range = [](double v, int lo, int hi) { return static_cast<int>(std::clamp(v, double(lo), double(hi))); };
   const int ix0 = to_range(std::floor(xlo), 0, img.width), ix1 = to_range(std::ceil(xhi), 0, img.width);
   const int iy0 = to_range(std::floor(ylo), r0, r1), iy1 = to_range(std::ceil(yhi), r0, r1);
-  if (r.nearest && x0 == std::floor(x0) && y0 == std::floor(y0) && x1 - x0 == src.width && y1 - y0 == src.height) {
+  if (nearest && x0 == std::floor(x0) && y0 == std::floor(y0) && x1 - x0 == src.width && y1 - y0 == src.height) {
     // Pixel for pixel (a layer, or one picture placed at whole pixels): each canvas pixel takes
     // the source pixel it covers, the one nearest sampling picks. A pixel with nothing in it
     // leaves the canvas as over would (p * c + px * 1 = px), so it is skipped.
@@ -43,7 +44,7 @@ void composite_raster(const Scene::Item::Raster& r, const Compositor& comp, Imag
       if (cx < xlo || cx >= xhi) continue;
       const double sx = (cx - x0) / (x1 - x0) * src.width;
       float s[4];
-      if (r.nearest) {
+      if (nearest) {
         const int px = static_cast<int>(std::floor(sx)), py = static_cast<int>(std::floor(sy));
         for (int k = 0; k < 4; ++k) s[k] = fetch(px, py, k);
       } else {

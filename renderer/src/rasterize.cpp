@@ -56,9 +56,11 @@ BandPlan plan_band(const Geometry& g, const Shape& s, int b0, int b1, int width)
 }
 
 // Whether the item may be resolved from its pieces in bands where its sweep costs too much.
-bool piece_eligible(const Scene::Item& it, bool box, double tolerance) {
-  using K = Scene::Item::Kind;
-  return box && tolerance > 0 && !it.clip && it.stroke.dashes.empty() && (it.kind == K::Stroke || it.kind == K::PathStroke);
+bool piece_eligible(const DrawItem& it, const ClipRegion* clip, bool box, double tolerance) {
+  const StrokeStyle* style = nullptr;
+  if (const auto* st = std::get_if<StrokeItem>(&it)) style = &st->style;
+  if (const auto* ps = std::get_if<PathStrokeItem>(&it)) style = &ps->style;
+  return box && tolerance > 0 && !clip && style && style->dashes.empty();
 }
 
 // An item's pieces (piece_coverage.hpp), built when one of its bands first needs them, by
@@ -66,17 +68,18 @@ bool piece_eligible(const Scene::Item& it, bool box, double tolerance) {
 // part that is a single point (its dot is not a piece).
 class LazyPieces {
  public:
-  const PieceCoverage* get(const Scene::Item& it, int width, int height) {
+  const PieceCoverage* get(const DrawItem& it, int width, int height) {
     std::call_once(once_, [&] {
       ConvexPieces cp;
       const Box clip{0, 0, static_cast<double>(width), static_cast<double>(height)};
       bool ok = true;
-      if (it.kind == Scene::Item::Kind::Stroke) {
-        ok = stroke_pieces(it.contours[0], it.closed, it.stroke, clip, cp);
+      if (const auto* st = std::get_if<StrokeItem>(&it)) {
+        ok = stroke_pieces(st->points, st->closed, st->style, clip, cp);
       } else {
-        const Path::Flat flat = it.path->flatten(kArcTolerance);
+        const auto& ps = std::get<PathStrokeItem>(it);
+        const Path::Flat flat = ps.path->flatten(kArcTolerance);
         for (std::size_t i = 0; i < flat.contours.size() && ok; ++i)
-          ok = stroke_pieces(flat.contours[i], flat.closed[i], it.stroke, clip, cp);
+          ok = stroke_pieces(flat.contours[i], flat.closed[i], ps.style, clip, cp);
       }
       if (ok) cov_ = std::make_unique<PieceCoverage>(std::move(cp), width, height, kBandRows);
     });
@@ -102,7 +105,7 @@ struct BandWork {
 // sweeping, or kStripRatio, while sweeping: then the band is cleared first) is drawn from the
 // pieces instead, and the sweep restarts below it: the verdict depends on the band alone, so
 // the bytes do not depend on the threads.
-BandWork render_box(const Geometry& g, const Prepared& p, const Scene::Item& item, LazyPieces* pieces, Image& img,
+BandWork render_box(const Geometry& g, const Prepared& p, const DrawItem& item, LazyPieces* pieces, Image& img,
                     int r0, int r1, BoxBand& band, StripSweep& sweep, PieceCoverage::Scratch& ps, std::uint64_t budget) {
   BandWork out;
   std::uint64_t base = 0;  // work before the sweep's last restart
@@ -175,20 +178,12 @@ BandWork render_box(const Geometry& g, const Prepared& p, const Scene::Item& ite
   return out;
 }
 
-const char* kind_name(Scene::Item::Kind k) {
-  using K = Scene::Item::Kind;
-  switch (k) {
-    case K::Stroke: return "stroked polyline";
-    case K::Fill: return "filled polygon";
-    case K::Disk: return "disk";
-    case K::Ring: return "stroked circle";
-    case K::Marker: return "marker";
-    case K::Text: return "text";
-    case K::Image: return "image";
-    case K::PathFill: return "filled path";
-    case K::PathStroke: return "stroked path";
-  }
-  return "item";
+const char* kind_name(const DrawItem& item) {
+  // In the order of DrawItem's alternatives.
+  static constexpr const char* names[] = {"stroked polyline", "filled polygon", "filled path", "stroked path", "disk",
+                                          "stroked circle",   "marker",         "text",        "image"};
+  static_assert(std::size(names) == std::variant_size_v<DrawItem>);
+  return names[item.index()];
 }
 
 // How far the exact sweep of the item's shape would go past `limit` crossings: a lower bound on
@@ -213,21 +208,21 @@ std::uint64_t work_budget(double limit) {
 // An item whose sweep went past the limit although the bound before it did not reach it: its
 // chains cross mostly where they begin or end (the bound counts only chains through a whole
 // band), as at the turns of a dense zigzag.
-[[noreturn]] void refuse_sweep(const Scene::Item& item, std::size_t index, double limit) {
+[[noreturn]] void refuse_sweep(const DrawItem& item, std::size_t index, double limit) {
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "item %zu (%s): its exact union was stopped at the work limit of the sweep, %.3g events "
                 "(crossings and turns of its outline, about 0.2 to 2 us each)",
-                index + 1, kind_name(item.kind), limit);
+                index + 1, kind_name(item), limit);
   throw std::length_error(buf);
 }
 
-[[noreturn]] void refuse_work(const Scene::Item& item, std::size_t index, double crossings, double limit) {
+[[noreturn]] void refuse_work(const DrawItem& item, std::size_t index, double crossings, double limit) {
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "item %zu (%s): its outline crosses itself at least %.3g times on the canvas; the exact union is "
                 "refused past %.3g crossings (work limit of the sweep, about 0.2 us each)",
-                index + 1, kind_name(item.kind), crossings, limit);
+                index + 1, kind_name(item), crossings, limit);
   throw std::length_error(buf);
 }
 
@@ -252,7 +247,7 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
 
   const bool box = exact_area(scene.filter_);
   const double tolerance = scene.tolerance_;
-  auto eligible = [&](std::size_t i) { return piece_eligible(scene.items()[i], box, tolerance); };
+  auto eligible = [&](std::size_t i) { return piece_eligible(scene.items()[i], scene.clip_of(i), box, tolerance); };
   std::vector<int> piece_bands(report ? scene.items().size() : 0, 0), item_bands(piece_bands.size(), 0);
   auto note_bands = [&](std::size_t i, const Prepared& p, int pieces) {
     if (!report || pieces == 0) return;
@@ -276,7 +271,7 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
   Geometry geom;
   const auto& items = scene.items();
   auto prepare = [&](std::size_t i, Prepared& p, Geometry& into, int item_threads) {
-    prepare_item(items[i], comp, shift, clip, into, p, H, item_threads);
+    prepare_item(items[i], scene.clip_of(i), comp, shift, clip, into, p, H, item_threads);
     if (p.raster || p.shape.empty()) return;
     if (box) {
       p.row0 = std::max(0, static_cast<int>(std::floor(p.shape.ymin)));

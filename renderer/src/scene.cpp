@@ -1,6 +1,6 @@
 // Scene: validation of every drawing call, then recording it. Bad input is rejected here with
 // std::invalid_argument naming the argument, so rasterization never sees NaN or infinities.
-#include "scene_item.hpp"
+#include "clip_region.hpp"
 #include "stroke.hpp"
 
 #include <splinefig/base/huge_pages.hpp>
@@ -15,13 +15,6 @@
 
 namespace splinefig::render {
 namespace {
-
-// Appends with geometric growth into huge-page-advised storage (100k items are tens of MB).
-void add(std::vector<Scene::Item>& items, Scene::Item&& it, const std::shared_ptr<const ClipRegion>& clip) {
-  it.clip = clip;
-  if (items.size() == items.capacity()) reserve_huge(items, std::max<std::size_t>(64, 2 * items.capacity()));
-  items.push_back(std::move(it));
-}
 
 [[noreturn]] void bad(const std::string& what) { throw DrawError(what); }
 
@@ -125,8 +118,7 @@ void validate_pixel_filter(const Kernel& k) {
 }
 
 Scene::Scene(int width, int height, Color background, Kernel filter)
-    : width_(width), height_(height), background_(background), filter_(std::move(filter)),
-      items_(std::make_unique<std::vector<Item>>()) {
+    : width_(width), height_(height), background_(background), filter_(std::move(filter)) {
   if (width < 1 || height < 1) bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " is empty");
   if (width > kMaxCanvasSide || height > kMaxCanvasSide)
     bad("canvas size " + std::to_string(width) + "x" + std::to_string(height) + " exceeds " + std::to_string(kMaxCanvasSide) +
@@ -151,11 +143,20 @@ void Scene::set_coverage_tolerance(double tolerance) {
   tolerance_ = tolerance;
 }
 
+// Appends with geometric growth into huge-page-advised storage (100k items are tens of MB); the
+// item's clip is noted from the first clipped item on.
+void Scene::record(DrawItem&& item) {
+  if (items_.size() == items_.capacity()) reserve_huge(items_, std::max<std::size_t>(64, 2 * items_.capacity()));
+  if (clip_ || !clips_.empty()) {
+    clips_.resize(items_.size());
+    clips_.push_back(clip_);
+  }
+  items_.push_back(std::move(item));
+}
+
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 Scene::~Scene() = default;
-
-const std::vector<Scene::Item>& Scene::items() const { return *items_; }
 
 void Scene::stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color) {
   stroke_polyline(std::vector<Vec2>(points.begin(), points.end()), closed, style, color);
@@ -174,13 +175,7 @@ void Scene::stroke_polyline(std::vector<Vec2>&& points, bool closed, const Strok
     bad(buf);
   }
   count_outline(detail::stroke_vertex_bound(points, closed, style, outline_box(width_, height_)), "stroke_polyline");
-  Item it;
-  it.kind = Item::Kind::Stroke;
-  it.contours.push_back(std::move(points));
-  it.closed = closed;
-  it.stroke = style;
-  it.color = color;
-  add(*items_, std::move(it), clip_);
+  record(StrokeItem{std::move(points), closed, style, color});
 }
 
 void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) {
@@ -189,12 +184,7 @@ void Scene::fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRul
   double vertices = 0;
   for (const auto& c : contours) vertices += static_cast<double>(c.size());
   count_outline(vertices, "fill_polygon");
-  Item it;
-  it.kind = Item::Kind::Fill;
-  it.contours = contours;
-  it.rule = rule;
-  it.color = color;
-  add(*items_, std::move(it), clip_);
+  record(FillItem{contours, rule, color});
 }
 
 void Scene::fill_circle(Vec2 centre, double radius, Color color) {
@@ -203,12 +193,7 @@ void Scene::fill_circle(Vec2 centre, double radius, Color color) {
   if (radius < 0) bad("fill_circle: radius " + num(radius) + " is negative");
   check_color(color, "fill_circle");
   count_outline(detail::arc_vertex_bound(centre, radius, 2 * std::numbers::pi, outline_box(width_, height_)) + 2, "fill_circle");
-  Item it;
-  it.kind = Item::Kind::Disk;
-  it.centre = centre;
-  it.radius = radius;
-  it.color = color;
-  add(*items_, std::move(it), clip_);
+  record(DiskItem{centre, radius, color});
 }
 
 void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) {
@@ -235,13 +220,7 @@ void Scene::stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, 
       count_outline(detail::stroke_vertex_bound(pts, true, style, near), "stroke_circle");
     }
   }
-  Item it;
-  it.kind = Item::Kind::Ring;
-  it.centre = centre;
-  it.radius = radius;
-  it.stroke = style;
-  it.color = color;
-  add(*items_, std::move(it), clip_);
+  record(RingItem{centre, radius, style, color});
 }
 
 void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
@@ -253,13 +232,7 @@ void Scene::marker(Marker shape, Vec2 centre, double size, Color fill) {
                     ? detail::arc_vertex_bound(centre, 0.5 * size, 2 * std::numbers::pi, outline_box(width_, height_)) + 2
                     : 16,
                 "marker");
-  Item it;
-  it.kind = Item::Kind::Marker;
-  it.marker = shape;
-  it.centre = centre;
-  it.radius = size;
-  it.color = fill;
-  add(*items_, std::move(it), clip_);
+  record(MarkerItem{shape, centre, size, fill});
 }
 
 void Scene::set_clip(const Path& path, FillRule rule) {
@@ -281,22 +254,14 @@ void Scene::image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling
     if (!std::isfinite(v)) bad("image: a pixel value is not finite");
   const Vec2 corners[2] = {p0, p1};
   check_points(corners, "image", "corner");
-  Item it;
-  it.kind = Item::Kind::Image;
-  it.raster = std::make_shared<const Item::Raster>(Item::Raster{std::move(image), p0, p1, sampling == Sampling::Nearest});
-  add(*items_, std::move(it), clip_);
+  record(ImageItem{std::move(image), p0, p1, sampling});
 }
 
 void Scene::fill_path(const Path& path, FillRule rule, Color color) {
   check_points(path.points(), "fill_path", "path");
   check_color(color, "fill_path");
   count_outline(static_cast<double>(path.flattened_size(detail::kArcTolerance)), "fill_path");
-  Item it;
-  it.kind = Item::Kind::PathFill;
-  it.path = std::make_shared<const Path>(path);
-  it.rule = rule;
-  it.color = color;
-  add(*items_, std::move(it), clip_);
+  record(PathFillItem{std::make_shared<const Path>(path), rule, color});
 }
 
 void Scene::stroke_path(const Path& path, const StrokeStyle& style, Color color) {
@@ -316,33 +281,7 @@ void Scene::stroke_path(const Path& path, const StrokeStyle& style, Color color)
       count_outline(vertices, "stroke_path");
     }
   }
-  Item it;
-  it.kind = Item::Kind::PathStroke;
-  it.path = std::make_shared<const Path>(path);
-  it.stroke = style;
-  it.color = color;
-  add(*items_, std::move(it), clip_);
-}
-
-void Scene::visit(SceneVisitor& v) const {
-  using K = Item::Kind;
-  for (const Item& it : *items_)
-    if (it.clip) bad("the scene has clipped items, which only the rasterizer draws (SVG and PDF do not carry clip paths)");
-  for (const Item& it : *items_) {
-    switch (it.kind) {
-      case K::Stroke: v.stroke_polyline(it.contours[0], it.closed, it.stroke, it.color); break;
-      case K::Fill: v.fill_polygon(it.contours, it.rule, it.color); break;
-      case K::PathFill: v.fill_path(*it.path, it.rule, it.color); break;
-      case K::PathStroke: v.stroke_path(*it.path, it.stroke, it.color); break;
-      case K::Disk: v.fill_circle(it.centre, it.radius, it.color); break;
-      case K::Ring: v.stroke_circle(it.centre, it.radius, it.stroke, it.color); break;
-      case K::Marker: v.marker(it.marker, it.centre, it.radius, it.color); break;
-      case K::Text: v.text(it.text->text, it.centre, it.text->style, it.text->outline); break;
-      case K::Image:
-        v.image(*it.raster->image, it.raster->p0, it.raster->p1, it.raster->nearest ? Sampling::Nearest : Sampling::Bilinear);
-        break;
-    }
-  }
+  record(PathStrokeItem{std::make_shared<const Path>(path), style, color});
 }
 
 void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
@@ -352,14 +291,10 @@ void Scene::text(std::string_view text, Vec2 anchor, const TextStyle& style) {
     bad("text: font size " + num(style.size) + " is outside (0, " + num(kMaxFontSize) + "]");
   check_color(style.color, "text");
   check_finite(style.angle, "text", "angle");
-  Item it;
-  it.kind = Item::Kind::Text;
   // Laid out now: bad UTF-8 and missing characters are errors of this call.
-  it.text = std::make_unique<Item::Text>(Item::Text{std::string(text), style, text_path(text, anchor, style)});
-  count_outline(static_cast<double>(it.text->outline.flattened_size(detail::kArcTolerance)), "text");
-  it.centre = anchor;
-  it.color = style.color;
-  add(*items_, std::move(it), clip_);
+  auto outline = std::make_shared<const Path>(text_path(text, anchor, style));
+  count_outline(static_cast<double>(outline->flattened_size(detail::kArcTolerance)), "text");
+  record(TextItem{std::string(text), anchor, style, std::move(outline)});
 }
 
 }  // namespace splinefig::render

@@ -107,22 +107,23 @@ TEST_CASE("a clipped self-crossing stroke equals the unclipped one where the cli
   }
 }
 
-TEST_CASE("clip paths: images and vector writers refuse them", "[renderer][clip]") {
-  render::Scene s(8, 8);
+TEST_CASE("clip paths: images refuse them, and the scene says it has clipped items", "[renderer][clip]") {
+  // The triangle (1, 1), (7, 1), (7, 7): the pixels below its diagonal (y > x) are outside.
+  render::Scene s(8, 8, kClear);
+  s.fill_circle({4, 4}, 1, kInk);  // before the clip: not clipped
+  CHECK_FALSE(s.clipped());
   s.set_clip(polygon_path({{{1, 1}, {7, 1}, {7, 7}}}));
   auto img = std::make_shared<Image>(1, 1, 4);
   CHECK_THROWS_AS(s.image(img, {0, 0}, {8, 8}, render::Scene::Sampling::Nearest), std::invalid_argument);
+  CHECK_FALSE(s.clipped());  // nothing recorded under the clip yet
   s.fill_circle({4, 4}, 3, kInk);
-  struct Nothing : render::SceneVisitor {
-    void stroke_polyline(std::span<const Vec2>, bool, const render::StrokeStyle&, render::Color) override {}
-    void fill_polygon(const std::vector<std::vector<Vec2>>&, FillRule, render::Color) override {}
-    void fill_path(const render::Path&, FillRule, render::Color) override {}
-    void stroke_path(const render::Path&, const render::StrokeStyle&, render::Color) override {}
-    void fill_circle(Vec2, double, render::Color) override {}
-    void stroke_circle(Vec2, double, const render::StrokeStyle&, render::Color) override {}
-    void marker(render::Marker, Vec2, double, render::Color) override {}
-    void text(std::string_view, Vec2, const render::TextStyle&, const render::Path&) override {}
-    void image(const Image&, Vec2, Vec2, render::Scene::Sampling) override {}
-  } v;
-  CHECK_THROWS_WITH(s.visit(v), Catch::Contains("clipped items"));
+  s.clear_clip();
+  s.fill_circle({1.5, 6.5}, 0.5, kInk);  // after clear_clip: not clipped
+  CHECK(s.clipped());
+  CHECK(s.items().size() == 3);
+  const Image out = render::rasterize(s, 1);
+  CHECK(alpha(out, 3, 4) > 0.5);   // the first disk, outside the triangle
+  CHECK(alpha(out, 2, 5) == 0);    // the clipped disk only, outside the triangle
+  CHECK(alpha(out, 5, 2) > 0.99);  // the clipped disk, inside the triangle
+  CHECK(alpha(out, 1, 6) > 0.5);   // the last disk, outside the triangle
 }

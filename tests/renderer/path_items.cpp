@@ -8,6 +8,8 @@
 
 #include <numeric>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 using namespace splinefig::render;
 
@@ -83,31 +85,28 @@ TEST_CASE("path items reject what other items reject, naming the call") {
 }
 
 namespace {
-struct Recorder : SceneVisitor {
-  std::string log;
-  void stroke_polyline(std::span<const Vec2> p, bool closed, const StrokeStyle&, Color) override {
-    log += "stroke" + std::to_string(p.size()) + (closed ? "c " : " ");
-  }
-  void fill_polygon(const std::vector<std::vector<Vec2>>& c, FillRule, Color) override { log += "fill" + std::to_string(c.size()) + " "; }
-  void fill_path(const Path& p, FillRule r, Color) override {
-    log += "fillpath" + std::to_string(p.verbs().size()) + (r == FillRule::EvenOdd ? "e " : "n ");
-  }
-  void stroke_path(const Path& p, const StrokeStyle& s, Color) override {
-    log += "strokepath" + std::to_string(p.points().size()) + "w" + std::to_string(static_cast<int>(s.width)) + " ";
-  }
-  void fill_circle(Vec2, double r, Color) override { log += "disk" + std::to_string(static_cast<int>(r)) + " "; }
-  void stroke_circle(Vec2, double r, const StrokeStyle&, Color) override { log += "ring" + std::to_string(static_cast<int>(r)) + " "; }
-  void marker(Marker m, Vec2, double, Color) override { log += m == Marker::Plus ? "plus " : "marker "; }
-  void text(std::string_view t, Vec2, const TextStyle&, const Path& outline) override {
-    log += "text:" + std::string(t) + (outline.empty() ? " " : "+outline ");
-  }
-  void image(const splinefig::Image& im, Vec2, Vec2, Scene::Sampling smp) override {
-    log += "image" + std::to_string(im.width) + (smp == Scene::Sampling::Nearest ? "n " : "b ");
-  }
-};
+// One word per item, from the item's own fields.
+std::string describe(const DrawItem& item) {
+  return std::visit(
+      [](const auto& it) -> std::string {
+        using T = std::decay_t<decltype(it)>;
+        if constexpr (std::is_same_v<T, StrokeItem>) return "stroke" + std::to_string(it.points.size()) + (it.closed ? "c" : "");
+        else if constexpr (std::is_same_v<T, FillItem>) return "fill" + std::to_string(it.contours.size());
+        else if constexpr (std::is_same_v<T, PathFillItem>)
+          return "fillpath" + std::to_string(it.path->verbs().size()) + (it.rule == FillRule::EvenOdd ? "e" : "n");
+        else if constexpr (std::is_same_v<T, PathStrokeItem>)
+          return "strokepath" + std::to_string(it.path->points().size()) + "w" + std::to_string(static_cast<int>(it.style.width));
+        else if constexpr (std::is_same_v<T, DiskItem>) return "disk" + std::to_string(static_cast<int>(it.radius));
+        else if constexpr (std::is_same_v<T, RingItem>) return "ring" + std::to_string(static_cast<int>(it.radius));
+        else if constexpr (std::is_same_v<T, MarkerItem>) return it.shape == Marker::Plus ? "plus" : "marker";
+        else if constexpr (std::is_same_v<T, TextItem>) return "text:" + it.text + (it.outline->empty() ? "" : "+outline");
+        else return "image" + std::to_string(it.image->width) + (it.sampling == Sampling::Nearest ? "n" : "b");
+      },
+      item);
+}
 }  // namespace
 
-TEST_CASE("visit reports every item in drawing order with its arguments") {
+TEST_CASE("items() holds every item in drawing order with its arguments") {
   Scene s(20, 20, {0.5f, 0.5f, 0.5f, 1});
   const Vec2 line[3] = {{0, 0}, {5, 5}, {9, 0}};
   s.stroke_polyline(line, true, {}, {});
@@ -123,10 +122,11 @@ TEST_CASE("visit reports every item in drawing order with its arguments") {
   s.marker(Marker::Plus, {3, 3}, 4, {});
   s.text("hi", {2, 2}, {});
   s.image(std::make_shared<const splinefig::Image>(splinefig::Image(3, 2, 4)), {0, 0}, {3, 2}, Scene::Sampling::Nearest);
-  Recorder r;
-  s.visit(r);
-  CHECK(r.log == "stroke3c fill2 fillpath2e strokepath4w3 disk2 ring4 plus text:hi+outline image3n ");
+  std::string log;
+  for (const DrawItem& item : s.items()) log += describe(item) + " ";
+  CHECK(log == "stroke3c fill2 fillpath2e strokepath4w3 disk2 ring4 plus text:hi+outline image3n ");
   CHECK(s.background().r == 0.5f);
+  CHECK_FALSE(s.clipped());
 }
 
 TEST_CASE("marker_polygon: the square and diamond outlines have the documented sizes") {

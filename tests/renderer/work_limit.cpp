@@ -51,7 +51,7 @@ PreparedItem prepare_first(const render::Scene& scene) {
   PreparedItem it;
   it.height = scene.height();
   const render::detail::Compositor comp(render::BlendSpace::linear);
-  render::detail::prepare_item(scene.items()[0], comp, {0, 0}, {0, 0, double(scene.width()), double(it.height)}, it.g,
+  render::detail::prepare_item(scene.items()[0], nullptr, comp, {0, 0}, {0, 0, double(scene.width()), double(it.height)}, it.g,
                                it.p, it.height);
   return it;
 }

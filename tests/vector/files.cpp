@@ -240,6 +240,19 @@ TEST_CASE("write_vector names the file it cannot write and accepts only .svg and
   CHECK_FALSE(splinefig::vector::is_vector_file("a.png"));
 }
 
+TEST_CASE("SVG and PDF refuse a scene with clipped items, which only the rasterizer draws") {
+  namespace r = splinefig::render;
+  r::Scene s(10, 10);
+  s.fill_circle({5, 5}, 2, {0, 0, 0, 1});
+  CHECK(splinefig::vector::to_svg(s).find("<circle") != std::string::npos);  // unclipped: written
+  r::Path clip;
+  clip.move_to({0, 0}), clip.line_to({10, 0}), clip.line_to({10, 10}), clip.close();
+  s.set_clip(clip);
+  s.fill_circle({5, 5}, 3, {0, 0, 0, 1});
+  CHECK_THROWS_WITH(splinefig::vector::to_svg(s), Catch::Contains("clipped items"));
+  CHECK_THROWS_WITH(splinefig::vector::to_pdf(s), Catch::Contains("clipped items"));
+}
+
 TEST_CASE("generated splines in SVG: an interpolating spline, relaxed B-splines and cubic Bezier curves are their pieces") {
   // The cubic pieces of each curve, in drawing order (paths without a C are axes, ticks and
   // the polygons, which are polylines of their own).

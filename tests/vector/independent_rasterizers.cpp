@@ -30,6 +30,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <variant>
+
 namespace fig = splinefig::figures;
 using splinefig::Image;
 
@@ -62,29 +67,24 @@ struct Outcome {
   double over_percent, max, mean;
 };
 
-// 0 inside the scene's nearest-sampled raster items, 1 elsewhere.
-struct RasterMask final : splinefig::render::SceneVisitor {
-  using Vec2 = splinefig::render::Vec2;
-  Image mask;
-  explicit RasterMask(int w, int h) : mask(Image::zeros(w, h, 1)) { std::fill(mask.pixels.begin(), mask.pixels.end(), 1.0f); }
-  void stroke_polyline(std::span<const Vec2>, bool, const splinefig::render::StrokeStyle&, splinefig::render::Color) override {}
-  void fill_polygon(const std::vector<std::vector<Vec2>>&, splinefig::render::FillRule, splinefig::render::Color) override {}
-  void fill_path(const splinefig::render::Path&, splinefig::render::FillRule, splinefig::render::Color) override {}
-  void stroke_path(const splinefig::render::Path&, const splinefig::render::StrokeStyle&, splinefig::render::Color) override {}
-  void fill_circle(Vec2, double, splinefig::render::Color) override {}
-  void stroke_circle(Vec2, double, const splinefig::render::StrokeStyle&, splinefig::render::Color) override {}
-  void marker(splinefig::render::Marker, Vec2, double, splinefig::render::Color) override {}
-  void text(std::string_view, Vec2, const splinefig::render::TextStyle&, const splinefig::render::Path&) override {}
-  void image(const Image&, Vec2 p0, Vec2 p1, splinefig::render::Scene::Sampling s) override {
-    if (s != splinefig::render::Scene::Sampling::Nearest) return;
-    const int x0 = std::max(0, static_cast<int>(std::floor(std::min(p0.x, p1.x)))) ,
+// 0 inside the scene's nearest-sampled raster items (with `images`), 1 elsewhere.
+Image raster_mask(const splinefig::render::Scene& scene, bool images) {
+  Image mask = Image::zeros(scene.width(), scene.height(), 1);
+  std::fill(mask.pixels.begin(), mask.pixels.end(), 1.0f);
+  if (!images) return mask;
+  for (const splinefig::render::DrawItem& item : scene.items()) {
+    const auto* im = std::get_if<splinefig::render::ImageItem>(&item);
+    if (!im || im->sampling != splinefig::render::Sampling::Nearest) continue;
+    const auto p0 = im->p0, p1 = im->p1;
+    const int x0 = std::max(0, static_cast<int>(std::floor(std::min(p0.x, p1.x)))),
               x1 = std::min(mask.width, static_cast<int>(std::ceil(std::max(p0.x, p1.x))));
     const int y0 = std::max(0, static_cast<int>(std::floor(std::min(p0.y, p1.y)))),
               y1 = std::min(mask.height, static_cast<int>(std::ceil(std::max(p0.y, p1.y))));
     for (int j = y0; j < y1; ++j)
       for (int i = x0; i < x1; ++i) mask.at(i, j, 0) = 0;
   }
-};
+  return mask;
+}
 
 Outcome compare(const std::string& png, const Image& peer, const Image* mask) {
   const Image ours = splinefig::read_image(png, splinefig::ReadMode::as_stored);
@@ -125,9 +125,9 @@ void check_every_figure(const std::string& tool, const std::string& format) {
     const std::string png = (dir / (s.name + ".png")).string(), vec = (dir / (s.name + "." + format)).string();
     fig::write_figure_file(f, png, fig::Format::png, {}, raster);
     fig::write_figure_file(f, vec, *fig::format_named(format), {}, raster);
-    RasterMask m(f.info.width, f.info.height);
-    if (tool == "rsvg-convert") f.scene.visit(m);
-    const Outcome r = compare(png, downsampled(peer_png(tool, vec, dir, s.name), f.info.width, f.info.height), &m.mask);
+    // librsvg's nearest sampling of an image is left out of the comparison; poppler's is not.
+    const Image mask = raster_mask(f.scene, tool == "rsvg-convert");
+    const Outcome r = compare(png, downsampled(peer_png(tool, vec, dir, s.name), f.info.width, f.info.height), &mask);
     INFO(s.name << " via " << tool << ": " << r.over_percent << "% of the pixels over 0.1, max " << r.max << ", mean "
                 << r.mean);
     CHECK(within(r));
@@ -146,30 +146,27 @@ namespace r = splinefig::render;
 
 // The scene recorded again with one change: text left out, every exact curve moved down by
 // `dy`, or the first exact curve drawn in `recolour`.
-struct Altered final : r::SceneVisitor {
+struct Altered {
   r::Scene out;
   bool drop_text = false;
   double dy = 0;
   std::optional<r::Color> recolour;
   explicit Altered(const r::Scene& s) : out(s.width(), s.height(), s.background(), s.filter()) {}
-  void stroke_polyline(std::span<const r::Vec2> p, bool closed, const r::StrokeStyle& st, r::Color c) override {
-    out.stroke_polyline(p, closed, st, c);
-  }
-  void fill_polygon(const std::vector<std::vector<r::Vec2>>& c, r::FillRule rule, r::Color col) override { out.fill_polygon(c, rule, col); }
-  void fill_path(const r::Path& p, r::FillRule rule, r::Color c) override { out.fill_path(p, rule, c); }
-  void stroke_path(const r::Path& p, const r::StrokeStyle& st, r::Color c) override {
+  void operator()(const r::StrokeItem& it) { out.stroke_polyline(it.points, it.closed, it.style, it.color); }
+  void operator()(const r::FillItem& it) { out.fill_polygon(it.contours, it.rule, it.color); }
+  void operator()(const r::PathFillItem& it) { out.fill_path(*it.path, it.rule, it.color); }
+  void operator()(const r::PathStrokeItem& it) {
+    r::Color c = it.color;
     if (recolour) c = *recolour, recolour.reset();
-    out.stroke_path(p.transformed(1, 0, 0, 1, 0, dy), st, c);
+    out.stroke_path(it.path->transformed(1, 0, 0, 1, 0, dy), it.style, c);
   }
-  void fill_circle(r::Vec2 c, double rad, r::Color col) override { out.fill_circle(c, rad, col); }
-  void stroke_circle(r::Vec2 c, double rad, const r::StrokeStyle& st, r::Color col) override { out.stroke_circle(c, rad, st, col); }
-  void marker(r::Marker m, r::Vec2 c, double size, r::Color col) override { out.marker(m, c, size, col); }
-  void text(std::string_view t, r::Vec2 a, const r::TextStyle& st, const r::Path&) override {
-    if (!drop_text) out.text(t, a, st);
+  void operator()(const r::DiskItem& it) { out.fill_circle(it.centre, it.radius, it.color); }
+  void operator()(const r::RingItem& it) { out.stroke_circle(it.centre, it.radius, it.style, it.color); }
+  void operator()(const r::MarkerItem& it) { out.marker(it.shape, it.centre, it.size, it.color); }
+  void operator()(const r::TextItem& it) {
+    if (!drop_text) out.text(it.text, it.anchor, it.style);
   }
-  void image(const Image& im, r::Vec2 p0, r::Vec2 p1, r::Scene::Sampling smp) override {
-    out.image(std::make_shared<const Image>(im), p0, p1, smp);
-  }
+  void operator()(const r::ImageItem& it) { out.image(it.image, it.p0, it.p1, it.sampling); }
 };
 
 }  // namespace
@@ -186,7 +183,7 @@ TEST_CASE("the tolerance rejects a figure without text, a curve half a pixel off
   const std::string png = (dir / "cbasis.png").string();
   fig::write_figure_file(f, png, fig::Format::png, {}, raster);
   auto outcome = [&](Altered& a, const std::string& stem) {
-    f.scene.visit(a);
+    for (const r::DrawItem& item : f.scene.items()) std::visit(a, item);
     const std::string svg = (dir / (stem + ".svg")).string();
     splinefig::vector::write_vector(svg, a.out);
     return compare(png, downsampled(peer_png("rsvg-convert", svg, dir, stem), f.info.width, f.info.height), nullptr);

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 namespace splinefig::vector {
 namespace {
@@ -21,59 +22,42 @@ using render::Vec2;
 // How far inside its rectangle an image is placed, in output pixels (PdfWriter::image).
 constexpr double kImageInset = 0.01;
 
-class PdfWriter final : public render::SceneVisitor {
+// The items drawn one by one on the page (std::visit); an item that draws nothing is skipped.
+class PdfWriter {
  public:
   explicit PdfWriter(cairo_t* cr) : cr_(cr) {}
 
-  void stroke_polyline(std::span<const Vec2> pts, bool closed, const render::StrokeStyle& st, render::Color c) override {
-    if (pts.empty() || !(st.width > 0) || c.a <= 0) return;
+  void operator()(const render::StrokeItem& it) {
+    if (it.points.empty() || !(it.style.width > 0) || it.color.a <= 0) return;
     cairo_new_path(cr_);
-    polyline(pts, closed);
-    stroke(st, c);
+    polyline(it.points, it.closed);
+    stroke(it.style, it.color);
   }
-  void fill_polygon(const std::vector<std::vector<Vec2>>& contours, render::FillRule rule, render::Color c) override {
-    if (c.a <= 0) return;
+  void operator()(const render::FillItem& it) { fill_polygon(it.contours, it.rule, it.color); }
+  void operator()(const render::PathFillItem& it) { fill_path(*it.path, it.rule, it.color); }
+  void operator()(const render::PathStrokeItem& it) {
+    if (it.path->empty() || !(it.style.width > 0) || it.color.a <= 0) return;
     cairo_new_path(cr_);
-    for (const auto& ctr : contours)
-      if (!ctr.empty()) polyline(ctr, true);
-    fill(rule, c);
+    path(*it.path);
+    stroke(it.style, it.color);
   }
-  void fill_path(const render::Path& p, render::FillRule rule, render::Color c) override {
-    if (p.empty() || c.a <= 0) return;
+  void operator()(const render::DiskItem& it) { fill_circle(it.centre, it.radius, it.color); }
+  void operator()(const render::RingItem& it) {
+    if (!(it.radius > 0) || !(it.style.width > 0) || it.color.a <= 0) return;
     cairo_new_path(cr_);
-    path(p);
-    fill(rule, c);
-  }
-  void stroke_path(const render::Path& p, const render::StrokeStyle& st, render::Color c) override {
-    if (p.empty() || !(st.width > 0) || c.a <= 0) return;
-    cairo_new_path(cr_);
-    path(p);
-    stroke(st, c);
-  }
-  void fill_circle(Vec2 ctr, double r, render::Color c) override {
-    if (!(r > 0) || c.a <= 0) return;
-    cairo_new_path(cr_);
-    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * std::numbers::pi);
+    cairo_arc(cr_, it.centre.x, it.centre.y, it.radius, 0, 2 * std::numbers::pi);
     cairo_close_path(cr_);
-    fill(render::FillRule::NonZero, c);
+    stroke(it.style, it.color);
   }
-  void stroke_circle(Vec2 ctr, double r, const render::StrokeStyle& st, render::Color c) override {
-    if (!(r > 0) || !(st.width > 0) || c.a <= 0) return;
-    cairo_new_path(cr_);
-    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * std::numbers::pi);
-    cairo_close_path(cr_);
-    stroke(st, c);
+  void operator()(const render::MarkerItem& it) {
+    if (it.shape == render::Marker::Circle) return fill_circle(it.centre, 0.5 * it.size, it.color);
+    if (!(it.size > 0)) return;
+    fill_polygon({render::marker_polygon(it.shape, it.centre, it.size)}, render::FillRule::NonZero, it.color);
   }
-  void marker(render::Marker m, Vec2 ctr, double size, render::Color c) override {
-    if (m == render::Marker::Circle) return fill_circle(ctr, 0.5 * size, c);
-    if (!(size > 0)) return;
-    fill_polygon({render::marker_polygon(m, ctr, size)}, render::FillRule::NonZero, c);
-  }
-  void text(std::string_view s, Vec2, const render::TextStyle& style, const render::Path& outline) override {
-    (void)s;
-    fill_path(outline, render::FillRule::NonZero, style.color);
-  }
-  void image(const Image& im, Vec2 p0, Vec2 p1, render::Scene::Sampling smp) override {
+  void operator()(const render::TextItem& it) { fill_path(*it.outline, render::FillRule::NonZero, it.style.color); }
+  void operator()(const render::ImageItem& it) {
+    const Image& im = *it.image;
+    const Vec2 p0 = it.p0, p1 = it.p1;
     cairo_surface_t* s = detail::image_surface(im);
     cairo_save(cr_);
     // The image's corners a hundredth of a pixel inside its rectangle: a viewer that rounds
@@ -87,7 +71,7 @@ class PdfWriter final : public render::SceneVisitor {
     cairo_scale(cr_, (p1.x - p0.x - 2 * ix) / im.width, (p1.y - p0.y - 2 * iy) / im.height);
     cairo_set_source_surface(cr_, s, 0, 0);
     cairo_pattern_t* pat = cairo_get_source(cr_);
-    cairo_pattern_set_filter(pat, smp == render::Scene::Sampling::Nearest ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_BILINEAR);
+    cairo_pattern_set_filter(pat, it.sampling == render::Sampling::Nearest ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_BILINEAR);
     cairo_pattern_set_extend(pat, CAIRO_EXTEND_PAD);
     cairo_new_path(cr_);
     cairo_rectangle(cr_, 0, 0, im.width, im.height);
@@ -98,6 +82,27 @@ class PdfWriter final : public render::SceneVisitor {
 
  private:
   cairo_t* cr_;
+
+  void fill_polygon(const std::vector<std::vector<Vec2>>& contours, render::FillRule rule, render::Color c) {
+    if (c.a <= 0) return;
+    cairo_new_path(cr_);
+    for (const auto& ctr : contours)
+      if (!ctr.empty()) polyline(ctr, true);
+    fill(rule, c);
+  }
+  void fill_path(const render::Path& p, render::FillRule rule, render::Color c) {
+    if (p.empty() || c.a <= 0) return;
+    cairo_new_path(cr_);
+    path(p);
+    fill(rule, c);
+  }
+  void fill_circle(Vec2 ctr, double r, render::Color c) {
+    if (!(r > 0) || c.a <= 0) return;
+    cairo_new_path(cr_);
+    cairo_arc(cr_, ctr.x, ctr.y, r, 0, 2 * std::numbers::pi);
+    cairo_close_path(cr_);
+    fill(render::FillRule::NonZero, c);
+  }
 
   void polyline(std::span<const Vec2> pts, bool closed) {
     cairo_move_to(cr_, pts[0].x, pts[0].y);
@@ -183,7 +188,7 @@ std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& o) 
   std::string error;
   try {
     PdfWriter w(cr);
-    scene.visit(w);
+    for (const render::DrawItem& item : detail::unclipped_items(scene)) std::visit(w, item);
   } catch (const std::exception& e) {
     error = e.what();
   }

@@ -9,6 +9,12 @@
 
 namespace splinefig::vector::detail {
 
+std::span<const render::DrawItem> unclipped_items(const render::Scene& scene) {
+  if (scene.clipped())
+    throw render::DrawError("the scene has clipped items, which only the rasterizer draws (SVG and PDF do not carry clip paths)");
+  return scene.items();
+}
+
 Srgb to_srgb(render::Color c) {
   auto e = [](float v) { return static_cast<double>(linear_to_srgb8(v)) / 255.0; };
   return {e(c.r), e(c.g), e(c.b), c.a};

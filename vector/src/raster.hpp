@@ -1,15 +1,21 @@
 #pragma once
-// What both writers share: sRGB colours and raster items as Cairo image surfaces.
+// What both writers share: the scene's items, sRGB colours and raster items as Cairo image
+// surfaces.
 #include <splinefig/renderer/path.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
 #include <cairo.h>
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace splinefig::vector::detail {
+
+// The scene's items in drawing order; throws render::DrawError if an item is clipped (SVG and
+// PDF as written here carry no clip paths).
+std::span<const render::DrawItem> unclipped_items(const render::Scene& scene);
 
 struct Srgb {
   double r, g, b, a;  // sRGB-encoded colour, straight alpha

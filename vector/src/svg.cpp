@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <variant>
 
 namespace splinefig::vector {
 namespace {
@@ -44,19 +45,75 @@ std::string base64(const std::vector<unsigned char>& in) {
   return out;
 }
 
-class SvgWriter final : public render::SceneVisitor {
+// One element per item (std::visit), none for an item that draws nothing.
+class SvgWriter {
  public:
   std::string out;
 
-  void stroke_polyline(std::span<const Vec2> pts, bool closed, const render::StrokeStyle& st, render::Color c) override {
-    if (pts.empty() || !(st.width > 0) || c.a <= 0) return;
+  void operator()(const render::StrokeItem& it) {
+    if (it.points.empty() || !(it.style.width > 0) || it.color.a <= 0) return;
     out += "<path d=\"";
-    polyline(pts, closed);
+    polyline(it.points, it.closed);
     out += "\" fill=\"none\"";
-    stroke_attributes(st, c);
+    stroke_attributes(it.style, it.color);
     out += "/>\n";
   }
-  void fill_polygon(const std::vector<std::vector<Vec2>>& contours, render::FillRule rule, render::Color c) override {
+  void operator()(const render::FillItem& it) { fill_polygon(it.contours, it.rule, it.color); }
+  void operator()(const render::PathFillItem& it) {
+    if (it.path->empty() || it.color.a <= 0) return;
+    out += "<path d=\"";
+    path(*it.path);
+    out += "\"";
+    fill_attributes(it.rule, it.color);
+    out += "/>\n";
+  }
+  void operator()(const render::PathStrokeItem& it) {
+    if (it.path->empty() || !(it.style.width > 0) || it.color.a <= 0) return;
+    out += "<path d=\"";
+    path(*it.path);
+    out += "\" fill=\"none\"";
+    stroke_attributes(it.style, it.color);
+    out += "/>\n";
+  }
+  void operator()(const render::DiskItem& it) { fill_circle(it.centre, it.radius, it.color); }
+  void operator()(const render::RingItem& it) {
+    if (!(it.radius > 0) || !(it.style.width > 0) || it.color.a <= 0) return;
+    circle(it.centre, it.radius);
+    out += " fill=\"none\"";
+    stroke_attributes(it.style, it.color);
+    out += "/>\n";
+  }
+  void operator()(const render::MarkerItem& it) {
+    if (it.shape == render::Marker::Circle) return fill_circle(it.centre, 0.5 * it.size, it.color);
+    if (!(it.size > 0)) return;
+    fill_polygon({render::marker_polygon(it.shape, it.centre, it.size)}, render::FillRule::NonZero, it.color);
+  }
+  void operator()(const render::TextItem& it) {
+    if (it.outline->empty() || it.style.color.a <= 0) return;
+    const std::string label = xml_escape(it.text);
+    out += "<path aria-label=\"" + label + "\" d=\"";
+    path(*it.outline);
+    out += "\"";
+    fill_attributes(render::FillRule::NonZero, it.style.color);
+    out += "><title>" + label + "</title></path>\n";
+  }
+  void operator()(const render::ImageItem& it) {
+    // The image's own pixels, mapped onto the rectangle (p0 is the image's top-left corner).
+    const Image& im = *it.image;
+    out += "<image width=\"" + std::to_string(im.width) + "\" height=\"" + std::to_string(im.height) +
+           "\" preserveAspectRatio=\"none\" transform=\"matrix(";
+    num(out, (it.p1.x - it.p0.x) / im.width);
+    out += " 0 0 ";
+    num(out, (it.p1.y - it.p0.y) / im.height);
+    out += ' ';
+    point(out, it.p0);
+    out += ")\"";
+    if (it.sampling == render::Sampling::Nearest) out += " image-rendering=\"optimizeSpeed\" style=\"image-rendering:pixelated\"";
+    out += " href=\"data:image/png;base64," + base64(detail::png_bytes(im)) + "\"/>\n";
+  }
+
+ private:
+  void fill_polygon(const std::vector<std::vector<Vec2>>& contours, render::FillRule rule, render::Color c) {
     if (c.a <= 0) return;
     std::string d;
     std::swap(d, out);
@@ -68,64 +125,12 @@ class SvgWriter final : public render::SceneVisitor {
     fill_attributes(rule, c);
     out += "/>\n";
   }
-  void fill_path(const render::Path& p, render::FillRule rule, render::Color c) override {
-    if (p.empty() || c.a <= 0) return;
-    out += "<path d=\"";
-    path(p);
-    out += "\"";
-    fill_attributes(rule, c);
-    out += "/>\n";
-  }
-  void stroke_path(const render::Path& p, const render::StrokeStyle& st, render::Color c) override {
-    if (p.empty() || !(st.width > 0) || c.a <= 0) return;
-    out += "<path d=\"";
-    path(p);
-    out += "\" fill=\"none\"";
-    stroke_attributes(st, c);
-    out += "/>\n";
-  }
-  void fill_circle(Vec2 ctr, double r, render::Color c) override {
+  void fill_circle(Vec2 ctr, double r, render::Color c) {
     if (!(r > 0) || c.a <= 0) return;
     circle(ctr, r);
     fill_attributes(render::FillRule::NonZero, c);
     out += "/>\n";
   }
-  void stroke_circle(Vec2 ctr, double r, const render::StrokeStyle& st, render::Color c) override {
-    if (!(r > 0) || !(st.width > 0) || c.a <= 0) return;
-    circle(ctr, r);
-    out += " fill=\"none\"";
-    stroke_attributes(st, c);
-    out += "/>\n";
-  }
-  void marker(render::Marker m, Vec2 ctr, double size, render::Color c) override {
-    if (m == render::Marker::Circle) return fill_circle(ctr, 0.5 * size, c);
-    if (!(size > 0)) return;
-    fill_polygon({render::marker_polygon(m, ctr, size)}, render::FillRule::NonZero, c);
-  }
-  void text(std::string_view s, Vec2, const render::TextStyle& style, const render::Path& outline) override {
-    if (outline.empty() || style.color.a <= 0) return;
-    const std::string label = xml_escape(s);
-    out += "<path aria-label=\"" + label + "\" d=\"";
-    path(outline);
-    out += "\"";
-    fill_attributes(render::FillRule::NonZero, style.color);
-    out += "><title>" + label + "</title></path>\n";
-  }
-  void image(const Image& im, Vec2 p0, Vec2 p1, render::Scene::Sampling smp) override {
-    // The image's own pixels, mapped onto the rectangle (p0 is the image's top-left corner).
-    out += "<image width=\"" + std::to_string(im.width) + "\" height=\"" + std::to_string(im.height) +
-           "\" preserveAspectRatio=\"none\" transform=\"matrix(";
-    num(out, (p1.x - p0.x) / im.width);
-    out += " 0 0 ";
-    num(out, (p1.y - p0.y) / im.height);
-    out += ' ';
-    point(out, p0);
-    out += ")\"";
-    if (smp == render::Scene::Sampling::Nearest) out += " image-rendering=\"optimizeSpeed\" style=\"image-rendering:pixelated\"";
-    out += " href=\"data:image/png;base64," + base64(detail::png_bytes(im)) + "\"/>\n";
-  }
-
- private:
   void polyline(std::span<const Vec2> pts, bool closed) {
     for (std::size_t i = 0; i < pts.size(); ++i) {
       out += i == 0 ? "M" : "L";
@@ -226,7 +231,7 @@ std::string to_svg(const render::Scene& scene, const Options& o) {
     out += "/>\n";
   }
   SvgWriter sw;
-  scene.visit(sw);
+  for (const render::DrawItem& item : detail::unclipped_items(scene)) std::visit(sw, item);
   out += sw.out;
   out += "</svg>\n";
   return out;

@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace splinefig::render {
@@ -124,12 +125,72 @@ struct TextExtent {
 TextExtent measure_text(std::string_view text, const TextStyle& style);
 
 class Path;  // path.hpp: lines and cubic Beziers
-class SceneVisitor;
 
 // The outline of a polygonal marker (square, diamond, plus, cross) of overall size `size`
 // (side, or arm span; plus and cross arms are size/4 thick) centred at `centre`, as one closed
 // contour. Circle markers are disks of diameter `size`: empty.
 std::vector<Vec2> marker_polygon(Marker shape, Vec2 centre, double size);
+
+// How a raster image item is sampled at canvas pixel centres.
+enum class Sampling { Nearest, Bilinear };
+
+// The drawing items: what a Scene records, one per drawing call, with that call's arguments
+// (validated by the scene; Scene below says what each draws). A Scene exposes them in drawing
+// order (Scene::items) for writers of other formats (vector/); a figure's display list records
+// the same items in its own units before they are scaled into a scene.
+struct StrokeItem {  // Scene::stroke_polyline
+  std::vector<Vec2> points;
+  bool closed = false;
+  StrokeStyle style;
+  Color color;
+};
+struct FillItem {  // Scene::fill_polygon
+  std::vector<std::vector<Vec2>> contours;
+  FillRule rule = FillRule::NonZero;
+  Color color;
+};
+struct PathFillItem {  // Scene::fill_path
+  std::shared_ptr<const Path> path;
+  FillRule rule = FillRule::NonZero;
+  Color color;
+};
+struct PathStrokeItem {  // Scene::stroke_path
+  std::shared_ptr<const Path> path;
+  StrokeStyle style;
+  Color color;
+};
+struct DiskItem {  // Scene::fill_circle
+  Vec2 centre;
+  double radius = 0;
+  Color color;
+};
+struct RingItem {  // Scene::stroke_circle
+  Vec2 centre;
+  double radius = 0;
+  StrokeStyle style;
+  Color color;
+};
+struct MarkerItem {  // Scene::marker
+  Marker shape = Marker::Circle;
+  Vec2 centre;
+  double size = 0;
+  Color color;
+};
+struct TextItem {  // Scene::text
+  std::string text;
+  Vec2 anchor;
+  TextStyle style;
+  // The glyph outlines the raster fills with the nonzero rule, in canvas pixels (text_path of
+  // text, anchor and style), laid out by the scene when the item is recorded.
+  std::shared_ptr<const Path> outline;
+};
+struct ImageItem {  // Scene::image: RGBA, associated alpha, as recorded
+  std::shared_ptr<const Image> image;
+  Vec2 p0, p1;  // the target rectangle's corners; p0 takes the image's top-left corner
+  Sampling sampling = Sampling::Nearest;
+};
+using DrawItem = std::variant<StrokeItem, FillItem, PathFillItem, PathStrokeItem, DiskItem, RingItem, MarkerItem,
+                              TextItem, ImageItem>;
 
 // The coverage error a scene accepts by default where a stroke is resolved from its pieces
 // (Scene::set_coverage_tolerance): 1/1024 of full coverage, a quarter of an 8-bit step.
@@ -159,13 +220,13 @@ class Scene {
   // canvas pixel whose centre lies inside samples the image at that centre, nearest or bilinear
   // (edge pixels repeated), and is composited over what is below. Not shaped by the pixel
   // filter: the image's own pixels are the samples.
-  enum class Sampling { Nearest, Bilinear };
+  using Sampling = render::Sampling;
   void image(std::shared_ptr<const Image> image, Vec2 p0, Vec2 p1, Sampling sampling);
 
   // Every shape and text item recorded from now on is drawn intersected with the region the
   // path encloses under `rule`, exactly (one sweep resolves shape and clip together), until
   // clear_clip() or the next set_clip. An image cannot be recorded while a clip is set, and SVG
-  // and PDF writers refuse a scene with clipped items (visit throws DrawError).
+  // and PDF writers refuse a scene with clipped items (clipped()).
   void set_clip(const Path& path, FillRule rule = FillRule::NonZero);
   void clear_clip();
 
@@ -195,10 +256,9 @@ class Scene {
 
   // Every recorded item, in drawing order, as the call that recorded it (for writers of
   // other formats: vector/).
-  void visit(SceneVisitor& v) const;
-
-  struct Item;  // defined by the implementation
-  const std::vector<Item>& items() const;
+  std::span<const DrawItem> items() const { return items_; }
+  // Whether some item was recorded under a clip path (set_clip), which only the rasterizer draws.
+  bool clipped() const { return !clips_.empty(); }
 
   Scene(Scene&&) noexcept;
   Scene& operator=(Scene&&) noexcept;
@@ -215,26 +275,13 @@ class Scene {
   // Adds an item's estimate to the scene's; std::invalid_argument naming `call` past the limit.
   void count_outline(double vertices, const char* call);
   double tolerance_ = kDefaultCoverageTolerance;
-  std::shared_ptr<const struct ClipRegion> clip_;  // scene_item.hpp
-  std::unique_ptr<std::vector<Item>> items_;
+  std::shared_ptr<const struct ClipRegion> clip_;  // clip_region.hpp
+  std::vector<DrawItem> items_;
+  // Each item's clip (null: none), index by index, once an item has been clipped; empty before.
+  std::vector<std::shared_ptr<const ClipRegion>> clips_;
+  void record(DrawItem&& item);
+  const ClipRegion* clip_of(std::size_t item) const { return item < clips_.size() ? clips_[item].get() : nullptr; }
   friend Image rasterize(const Scene&, int threads, struct RasterReport* report);
-};
-
-// What Scene::visit reports: one call per item, with the arguments the item was recorded
-// with (validated; images as recorded: linear RGBA, associated alpha).
-class SceneVisitor {
- public:
-  virtual ~SceneVisitor() = default;
-  virtual void stroke_polyline(std::span<const Vec2> points, bool closed, const StrokeStyle& style, Color color) = 0;
-  virtual void fill_polygon(const std::vector<std::vector<Vec2>>& contours, FillRule rule, Color color) = 0;
-  virtual void fill_path(const Path& path, FillRule rule, Color color) = 0;
-  virtual void stroke_path(const Path& path, const StrokeStyle& style, Color color) = 0;
-  virtual void fill_circle(Vec2 centre, double radius, Color color) = 0;
-  virtual void stroke_circle(Vec2 centre, double radius, const StrokeStyle& style, Color color) = 0;
-  virtual void marker(Marker shape, Vec2 centre, double size, Color fill) = 0;
-  // `outline`: the glyph outlines the raster fills (text_path of text, anchor and style).
-  virtual void text(std::string_view text, Vec2 anchor, const TextStyle& style, const Path& outline) = 0;
-  virtual void image(const Image& image, Vec2 p0, Vec2 p1, Scene::Sampling sampling) = 0;
 };
 
 // How rasterize resolved each item, for callers that report it (`render -v`): the items with
