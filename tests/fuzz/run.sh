@@ -7,9 +7,20 @@
 #   tests/fuzz/run.sh SECONDS [HARNESS...]     (default: all; BUILD defaults to build-fuzz)
 # KEEP_GOING=1 runs each harness in libFuzzer's fork mode, collecting every finding instead of
 # stopping at the first (for long runs); the harness still fails if it left any.
+# Every run passes libFuzzer -seed=FUZZ_SEED (default 1; printed with each harness), so that it
+# mutates the same inputs in the same order: FUZZ_RUNS=N (-runs=N, which ends a harness after N
+# inputs, before SECONDS if it gets there) from a fresh working corpus (rm -r BUILD/corpus-work) on
+# the same build repeats a run exactly; a run bounded only by SECONDS stops wherever the machine's
+# speed has got it to. Another FUZZ_SEED explores elsewhere. KEEP_GOING's fork mode is not
+# repeatable. The same corpora are replayed by the ordinary test build (ctest
+# "fuzz-replay:<harness>", docs/testing.md).
 set -euo pipefail
 seconds=${1:?usage: tests/fuzz/run.sh SECONDS [HARNESS...]}
 shift
+seed=${FUZZ_SEED:-1}
+case $seed in '' | *[!0-9]*) echo "FUZZ_SEED must be a decimal number, not '$seed'" >&2; exit 2 ;; esac
+runs=${FUZZ_RUNS:--1}
+case $runs in -1) ;; '' | *[!0-9]*) echo "FUZZ_RUNS must be a decimal number, not '$runs'" >&2; exit 2 ;; esac
 cd "$(dirname "$0")/../.."
 root=$PWD
 build=${BUILD:-$root/build-fuzz}
@@ -25,7 +36,9 @@ for h in "${harnesses[@]}"; do
   work=$build/corpus-work/$h
   mkdir -p "$work"
   cp -n "$root/tests/fuzz/corpus/$h/"* "$work/" 2>/dev/null || true
-  args=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1
+  # -reload=0: libFuzzer would otherwise reread the corpus directory every second, so that how
+  # far a run had got at each second (the machine's load) would change what it mutates next.
+  args=(-seed="$seed" -runs="$runs" -reload=0 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1
         -artifact_prefix="$build/$h-")
   case $h in
     spec) cat "$root/tests/fuzz/toml.dict" "$root/tests/fuzz/toml_structure.dict" >"$build/spec.dict"
@@ -34,7 +47,7 @@ for h in "${harnesses[@]}"; do
   esac
   [ "${KEEP_GOING:-0}" = 1 ] && args+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   rm -f "$build/$h-"crash-* "$build/$h-"timeout-* "$build/$h-"oom-* "$build/$h-"leak-*
-  echo "== fuzz_$h for ${seconds}s"
+  echo "== fuzz_$h for ${seconds}s, -seed=$seed"
   log=$build/fuzz_$h.log
   if ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       "$build/tests/fuzz/fuzz_$h" "${args[@]}" "$work" >"$log" 2>&1 &&

@@ -1,0 +1,26 @@
+# splinefig_fuzz_harness(TARGET HARNESS): what the harness tests/fuzz/fuzz_HARNESS.cpp is built
+# with (its source, the libraries it calls), for the libFuzzer executable (tests/fuzz/CMakeLists.txt,
+# SPLINEFIG_FUZZ=ON) and for the corpus replay of the ordinary test build (tests/CMakeLists.txt).
+find_package(CLI11 REQUIRED)
+find_package(ZLIB REQUIRED)  # the image harnesses rewrite PNG chunk CRCs (fuzz_image_input.hpp)
+function(splinefig_fuzz_harness target harness)
+  set(dir ${PROJECT_SOURCE_DIR}/tests/fuzz)
+  target_sources(${target} PRIVATE ${dir}/fuzz_${harness}.cpp)
+  if(harness STREQUAL "spec")
+    target_link_libraries(${target} PRIVATE splinefig::figures splinefig::image)
+  elseif(harness STREQUAL "basis")
+    target_link_libraries(${target} PRIVATE splinefig::spline)
+  elseif(harness STREQUAL "csv")
+    target_sources(${target} PRIVATE ${PROJECT_SOURCE_DIR}/cli/points_io.cpp ${PROJECT_SOURCE_DIR}/cli/number_flags.cpp
+                                      ${PROJECT_SOURCE_DIR}/cli/reference.cpp)
+    target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/cli)
+    target_link_libraries(${target} PRIVATE splinefig::base splinefig::spline CLI11::CLI11)
+  elseif(harness STREQUAL "compare")
+    target_link_libraries(${target} PRIVATE splinefig::compare splinefig::image ZLIB::ZLIB)
+  elseif(harness STREQUAL "resample")
+    target_link_libraries(${target} PRIVATE splinefig::resample splinefig::image splinefig::spline ZLIB::ZLIB)
+  else()
+    message(FATAL_ERROR "splinefig_fuzz_harness: no harness ${harness}")
+  endif()
+endfunction()
+set(SPLINEFIG_FUZZ_HARNESSES spec basis csv compare resample)
