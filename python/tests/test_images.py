@@ -3,8 +3,8 @@ back through OpenImageIO's own Python bindings), OpenImageIO's resize and compar
 computed here from its definition."""
 import json
 import os
+import sys
 import threading
-import time
 
 import numpy as np
 import pytest
@@ -199,28 +199,39 @@ def test_resample_in_place_gives_the_bits_of_the_librarys_own_image(rng):
 
 
 def test_resample_releases_the_gil():
-    src = np.random.default_rng(1).uniform(size=(1024, 1024, 3)).astype(np.float32)
+    # A second Python thread counts while the main thread is inside the call. With a switch
+    # interval far longer than the test, the interpreter never takes the lock from the main
+    # thread: between reading the count and reading it again after the call, the counter can
+    # only move if the call itself let the lock go. No clock decides anything; a call that holds
+    # the lock fails every attempt, one that releases it passes unless the counter thread was not
+    # scheduled at all during any of the calls.
+    src = np.random.default_rng(1).uniform(size=(512, 512, 3)).astype(np.float32)
     k = splinefig.Basis.catmull_rom().kernel()
-    stamps, calls, done = [], [], threading.Event()
+    count = [0]
+    stop = threading.Event()
 
-    def tick():
-        while not done.is_set():
-            stamps.append(time.perf_counter())
-            time.sleep(0.0005)
+    def counter():
+        while not stop.is_set():
+            count[0] += 1
+            stop.wait(0.0002)  # blocks, and so lets the lock go, between counts
 
-    t = threading.Thread(target=tick)
+    old_interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    t = threading.Thread(target=counter)
     t.start()
     try:
-        for _ in range(5):
-            t0 = time.perf_counter()
-            _core.resample(src, 2048, 2048, k, "clamp", False, 1)
-            calls.append((t0, time.perf_counter()))
+        moved = []
+        for _ in range(20):
+            before = count[0]
+            _core.resample(src, 1024, 1024, k, "clamp", False, 1)
+            moved.append(count[0] - before)
+            if moved[-1] > 0:
+                break
     finally:
-        done.set()
+        stop.set()
         t.join()
-    # With the interpreter's lock held for the call, no stamp could fall inside one.
-    inside = [any(t0 + (t1 - t0) / 3 < s < t1 - (t1 - t0) / 3 for s in stamps) for t0, t1 in calls]
-    assert any(inside), "no Python thread ran while resampling"
+        sys.setswitchinterval(old_interval)
+    assert moved[-1] > 0, f"the counter thread never ran during a call ({len(moved)} calls)"
 
 
 # ---- comparison ------------------------------------------------------------------------------

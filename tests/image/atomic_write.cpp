@@ -10,6 +10,8 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -50,23 +52,51 @@ std::string bytes_of(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Runs `child` in a forked process; returns its wait status.
-template <class F>
-int in_child(F child) {
+// Starts the hidden test case `name` of this executable in a new process, given `dir` in
+// SPLINEFIG_CHILD_DIR (and `extra_env`); in_fresh_process waits for it and returns its wait
+// status (the code child_main's body returned). A fresh
+// exec, not a bare fork: when this process has already written an EXR (another test case, run
+// in the same process by `test_image` without a filter), OpenEXR's thread pool is running, and a
+// forked copy that writes an EXR waits forever for workers it does not have.
+pid_t spawn_fresh_process(const std::string& name, const fs::path& dir, const std::vector<std::string>& extra_env = {}) {
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind("SPLINEFIG_CHILD_", 0) != 0) env.emplace_back(*e);
+  env.push_back("SPLINEFIG_CHILD_DIR=" + dir.string());
+  env.insert(env.end(), extra_env.begin(), extra_env.end());
+  std::vector<char*> envp, argv{const_cast<char*>("test_image"), const_cast<char*>(name.c_str()), nullptr};
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
   const pid_t pid = ::fork();
   REQUIRE(pid >= 0);
   if (pid == 0) {
-    int code = 99;
-    try {
-      code = child();
-    } catch (...) {
-      code = 98;
-    }
-    ::_exit(code);
+    ::execve("/proc/self/exe", argv.data(), envp.data());
+    ::_exit(97);
   }
+  return pid;
+}
+
+int in_fresh_process(const std::string& name, const fs::path& dir) {
+  const pid_t pid = spawn_fresh_process(name, dir);
   int status = 0;
   REQUIRE(::waitpid(pid, &status, 0) == pid);
   return status;
+}
+
+// The body of a hidden test case run by in_fresh_process: `body(dir)`'s return value is the
+// process's exit code (98: it threw). Run any other way (no SPLINEFIG_CHILD_DIR), it does nothing.
+template <class F>
+void child_main(F body) {
+  const char* dir = std::getenv("SPLINEFIG_CHILD_DIR");
+  if (!dir) return;
+  int code = 99;
+  try {
+    code = body(fs::path(dir));
+  } catch (...) {
+    code = 98;
+  }
+  std::fflush(nullptr);
+  ::_exit(code);
 }
 
 }  // namespace
@@ -119,14 +149,10 @@ TEST_CASE("atomic write: threads writing the same and different files leave only
   }
 }
 
-TEST_CASE("atomic write: a full disk is an error, the old file stays and no temporary is left") {
-  // Everything that touches OpenImageIO runs in the child: its thread pools do not survive fork.
-  const auto dir = scratch_dir("full-disk");
-  const fs::path out = dir / "out", keep = dir / "keep";
-  fs::create_directories(out);
-  fs::create_directories(keep);
-  const fs::path png = out / "figure.png", exr = out / "figure.exr";
-  const int status = in_child([&] {
+TEST_CASE("atomic write child - full disk", "[.child]") {
+  child_main([](const fs::path& dir) {
+    const fs::path out = dir / "out", keep = dir / "keep";
+    const fs::path png = out / "figure.png", exr = out / "figure.exr";
     write_image(png.string(), noise(8, 8, 4));
     write_image(exr.string(), noise(8, 8, 4));
     fs::copy_file(png, keep / "figure.png");
@@ -148,6 +174,16 @@ TEST_CASE("atomic write: a full disk is an error, the old file stays and no temp
     }
     return code;
   });
+}
+
+TEST_CASE("atomic write: a full disk is an error, the old file stays and no temporary is left") {
+  // The file-size limit and everything that touches OpenImageIO are in a fresh process.
+  const auto dir = scratch_dir("full-disk");
+  const fs::path out = dir / "out", keep = dir / "keep";
+  fs::create_directories(out);
+  fs::create_directories(keep);
+  const fs::path png = out / "figure.png", exr = out / "figure.exr";
+  const int status = in_fresh_process("atomic write child - full disk", dir);
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 0);
   CHECK(names_in(out) == std::vector<std::string>{"figure.exr", "figure.png"});
@@ -155,15 +191,12 @@ TEST_CASE("atomic write: a full disk is an error, the old file stays and no temp
   CHECK(bytes_of(exr) == bytes_of(keep / "figure.exr"));
 }
 
-namespace {
-
-// Threads writing PNGs in a forked child at the signal's default action; `sig` after
-// `delay_ms`: the child ends by that signal and leaves only complete files.
-void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const std::string& tag) {
-  const auto dir = scratch_dir(tag);
-  const pid_t pid = ::fork();
-  REQUIRE(pid >= 0);
-  if (pid == 0) {
+// Threads writing PNGs in a fresh process (no cleanup handler inherited: a forked copy of a
+// process that has written an image already would inherit this one's, which the reset to the
+// default action below would then remove), at the signal's default action until the signal.
+TEST_CASE("atomic write child - writers until a signal", "[.child]") {
+  child_main([](const fs::path& dir) {
+    const int sig = std::atoi(std::getenv("SPLINEFIG_CHILD_SIGNAL")), threads = std::atoi(std::getenv("SPLINEFIG_CHILD_THREADS"));
     std::signal(sig, SIG_DFL);  // as in a plain process (the test runner catches some)
     const rlimit no_core{0, 0};
     ::setrlimit(RLIMIT_CORE, &no_core);  // SIGQUIT, SIGXCPU, SIGXFSZ and the faults would dump core
@@ -181,20 +214,36 @@ void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const 
         }
       });
     for (auto& th : pool) th.join();
-    ::_exit(0);
-  }
+    return 0;
+  });
+}
+
+namespace {
+
+// That child, sent `sig` `delay_ms` after the first file of its appeared in its directory: it
+// ends by that signal and leaves only complete files.
+void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const std::string& tag) {
+  const auto dir = scratch_dir(tag);
+  const pid_t pid = spawn_fresh_process("atomic write child - writers until a signal", dir,
+                                        {"SPLINEFIG_CHILD_SIGNAL=" + std::to_string(sig), "SPLINEFIG_CHILD_THREADS=" + std::to_string(threads)});
+  // The child has started writing: its first (temporary) file exists. The safety limit only
+  // reports a child that never writes.
+  const auto t0 = std::chrono::steady_clock::now();
+  while (fs::is_empty(dir) && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const bool started = !fs::is_empty(dir);
   std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
   ::kill(pid, sig);
   int status = 0;
   REQUIRE(::waitpid(pid, &status, 0) == pid);
   INFO(tag);
+  REQUIRE(started);
   CHECK(WIFSIGNALED(status));
   if (WIFSIGNALED(status)) CHECK(WTERMSIG(status) == sig);
   for (const auto& n : names_in(dir)) {
     INFO(n);
     CHECK(n.find(".tmp") == std::string::npos);
-    // Complete PNG structure, every CRC and the whole zlib stream (no OpenImageIO in this
-    // process: its worker threads would be copied half-locked into the next round's fork).
+    // Complete PNG structure, every CRC and the whole zlib stream (read here byte by byte).
     CHECK_NOTHROW(check_png_structure((dir / n).string()));
   }
   fs::remove_all(dir);
@@ -204,7 +253,7 @@ void check_signal_leaves_no_temporary(int sig, int threads, int delay_ms, const 
 
 TEST_CASE("atomic write: SIGTERM during parallel writes leaves no temporary file") {
   for (int round = 0; round < 8; ++round)
-    check_signal_leaves_no_temporary(SIGTERM, 4, 150 + 37 * round, "sigterm-" + std::to_string(round));
+    check_signal_leaves_no_temporary(SIGTERM, 4, 37 * round, "sigterm-" + std::to_string(round));
 }
 
 TEST_CASE("atomic write: every signal that ends the process by default leaves no temporary file") {
@@ -219,12 +268,11 @@ TEST_CASE("atomic write: every signal that ends the process by default leaves no
   signals.push_back(SIGPWR);
 #endif
   for (int sig : {SIGRTMIN, SIGRTMIN + 1, (SIGRTMIN + SIGRTMAX) / 2, SIGRTMAX}) signals.push_back(sig);
-  for (int sig : signals) check_signal_leaves_no_temporary(sig, 2, 150, "signal-" + std::to_string(sig));
+  for (int sig : signals) check_signal_leaves_no_temporary(sig, 2, 20, "signal-" + std::to_string(sig));
 }
 
-TEST_CASE("atomic write: an inherited SIG_IGN stays ignored") {
-  const auto dir = scratch_dir("sig-ign");
-  const int status = in_child([&] {
+TEST_CASE("atomic write child - inherited SIG_IGN", "[.child]") {
+  child_main([](const fs::path& dir) {
     std::signal(SIGINT, SIG_IGN);
     write_image((dir / "a.png").string(), noise(4, 4, 6));  // installs the cleanup handlers
     ::raise(SIGINT);
@@ -232,9 +280,21 @@ TEST_CASE("atomic write: an inherited SIG_IGN stays ignored") {
     ::raise(SIGINT);
     return 7;
   });
+}
+
+TEST_CASE("atomic write: an inherited SIG_IGN stays ignored") {
+  const auto dir = scratch_dir("sig-ign");
+  const int status = in_fresh_process("atomic write child - inherited SIG_IGN", dir);
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 7);
   CHECK(names_in(dir) == std::vector<std::string>{"a.png", "b.png"});
+}
+
+TEST_CASE("atomic write child - write fig.png", "[.child]") {
+  child_main([](const fs::path& dir) {
+    write_image((dir / "fig.png").string(), noise(4, 4, 9));
+    return 0;
+  });
 }
 
 TEST_CASE("atomic write: temporaries left by killed processes are removed, those of live ones kept") {
@@ -247,10 +307,7 @@ TEST_CASE("atomic write: temporaries left by killed processes are removed, those
   const std::string live = temporary_name("fig.png", long(::getppid()), 4);
   const std::string other = temporary_name("other.png", long(dead), 5);
   for (const auto& n : {stale, live, other}) std::ofstream(dir / n) << "partial";
-  const int status = in_child([&] {
-    write_image((dir / "fig.png").string(), noise(4, 4, 9));
-    return 0;
-  });
+  const int status = in_fresh_process("atomic write child - write fig.png", dir);
   REQUIRE(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 0);
   CHECK_FALSE(fs::exists(dir / stale));
