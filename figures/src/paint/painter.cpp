@@ -17,33 +17,34 @@ namespace splinefig::figures::detail {
 void Painter::set_origin(const SpecLocation& origin) {
   if (origins_.back() != origin) origins_.push_back(origin);
 }
-const SpecLocation& Painter::origin_of(std::size_t op) const { return origins_[op_origin_[op]]; }
-void Painter::add(Op op) {
+const SpecLocation& Painter::origin_of(std::size_t op) const { return origins_[notes_[op].origin]; }
+void Painter::add(Op op, bool hairline) {
   ops_.push_back(std::move(op));
-  op_origin_.push_back(static_cast<std::uint32_t>(origins_.size() - 1));
+  notes_.push_back({static_cast<std::uint32_t>(origins_.size() - 1), hairline});
 }
 
 void Painter::stroke(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c) {
   if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
-  add(StrokeOp{std::move(pts), closed, s, c});
+  add(render::StrokeItem{std::move(pts), closed, s, c});
 }
 void Painter::hairline(std::vector<Vec2> pts, bool closed, const render::StrokeStyle& s, Color c) {
   if (pts.empty() || !(s.width > 0) || c.a <= 0) return;
-  add(StrokeOp{std::move(pts), closed, s, c, true});
+  add(render::StrokeItem{std::move(pts), closed, s, c}, true);
 }
 void Painter::stroke(render::Path path, const render::StrokeStyle& s, Color c) {
   if (path.empty() || !(s.width > 0) || c.a <= 0) return;
-  add(PathStrokeOp{std::move(path), s, c});
+  add(render::PathStrokeItem{std::make_shared<const render::Path>(std::move(path)), s, c});
 }
 void Painter::fill(std::vector<std::vector<Vec2>> contours, render::FillRule rule, Color c) {
   if (c.a <= 0) return;
-  add(FillOp{std::move(contours), rule, c});
+  add(render::FillItem{std::move(contours), rule, c});
 }
 void Painter::circle(Vec2 centre, double r, std::optional<Color> fill, std::optional<Pen> stroke) {
-  add(CircleOp{centre, r, fill, stroke});
+  if (fill) add(render::DiskItem{centre, r, *fill});
+  if (stroke) add(render::RingItem{centre, r, stroke->style, stroke->color});
 }
 void Painter::marker(render::Marker shape, Vec2 centre, double size, Color c) {
-  add(MarkerOp{shape, centre, size, c});
+  add(render::MarkerItem{shape, centre, size, c});
 }
 void Painter::text(std::string s, Vec2 at, const Font& f, TextAnchor a, double angle) {
   if (s.empty()) return;
@@ -162,20 +163,20 @@ render::Scene scene_of(const Painter& p, int width, int height, Color background
     naming_origin(p.origin_of(i), [&] { std::visit(
         [&](const auto& o) {
           using T = std::decay_t<decltype(o)>;
-          if constexpr (std::is_same_v<T, StrokeOp>) {
-            if (snap && o.snap) scene.stroke_polyline(snapped(scaled(o.points, s), o.closed, o.style.width * s), o.closed, scaled(o.style, s), o.color);
+          if constexpr (std::is_same_v<T, render::StrokeItem>) {
+            if (snap && p.hairline_at(i)) scene.stroke_polyline(snapped(scaled(o.points, s), o.closed, o.style.width * s), o.closed, scaled(o.style, s), o.color);
             else scene.stroke_polyline(scaled(o.points, s), o.closed, scaled(o.style, s), o.color);
-          } else if constexpr (std::is_same_v<T, PathStrokeOp>) {
-            scene.stroke_path(o.path.transformed(s, 0, 0, s, 0, 0), scaled(o.style, s), o.color);
-          } else if constexpr (std::is_same_v<T, FillOp>) {
+          } else if constexpr (std::is_same_v<T, render::PathStrokeItem>) {
+            scene.stroke_path(o.path->transformed(s, 0, 0, s, 0, 0), scaled(o.style, s), o.color);
+          } else if constexpr (std::is_same_v<T, render::FillItem>) {
             std::vector<std::vector<Vec2>> c;
             for (const auto& contour : o.contours) c.push_back(scaled(contour, s));
             scene.fill_polygon(c, o.rule, o.color);
-          } else if constexpr (std::is_same_v<T, CircleOp>) {
-            Vec2 ctr{o.centre.x * s, o.centre.y * s};
-            if (o.fill) scene.fill_circle(ctr, o.radius * s, *o.fill);
-            if (o.stroke) scene.stroke_circle(ctr, o.radius * s, scaled(o.stroke->style, s), o.stroke->color);
-          } else if constexpr (std::is_same_v<T, MarkerOp>) {
+          } else if constexpr (std::is_same_v<T, render::DiskItem>) {
+            scene.fill_circle({o.centre.x * s, o.centre.y * s}, o.radius * s, o.color);
+          } else if constexpr (std::is_same_v<T, render::RingItem>) {
+            scene.stroke_circle({o.centre.x * s, o.centre.y * s}, o.radius * s, scaled(o.style, s), o.color);
+          } else if constexpr (std::is_same_v<T, render::MarkerItem>) {
             scene.marker(o.shape, {o.centre.x * s, o.centre.y * s}, o.size * s, o.color);
           } else if constexpr (std::is_same_v<T, TextOp>) {
             draw_text(scene, o, s);

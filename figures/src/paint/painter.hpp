@@ -16,35 +16,7 @@
 
 namespace splinefig::figures::detail {
 
-struct StrokeOp {
-  std::vector<Vec2> points;
-  bool closed;
-  render::StrokeStyle style;
-  Color color;
-  bool snap = false;  // an axis-aligned hairline: on the pixel grid in raster output
-};
-struct PathStrokeOp {  // exact curves: lines and Beziers
-  render::Path path;
-  render::StrokeStyle style;
-  Color color;
-};
-struct FillOp {
-  std::vector<std::vector<Vec2>> contours;
-  render::FillRule rule;
-  Color color;
-};
-struct CircleOp {
-  Vec2 centre;
-  double radius;
-  std::optional<Color> fill;
-  std::optional<Pen> stroke;
-};
-struct MarkerOp {
-  render::Marker shape;
-  Vec2 centre;
-  double size;
-  Color color;
-};
+// A label (rich_text.hpp markup): set as runs when the list is scaled, at the output size.
 struct TextOp {
   std::string text;
   Vec2 at;
@@ -52,11 +24,15 @@ struct TextOp {
   TextAnchor anchor;
   double angle;  // degrees, counter-clockwise, about `at`
 };
+// A raster of the spec: read when the list is scaled (it becomes a render::ImageItem).
 struct ImageOp {
   Raster raster;
   double x0, y0, x1, y1;  // target rectangle in layout units
 };
-using Op = std::variant<StrokeOp, PathStrokeOp, FillOp, CircleOp, MarkerOp, TextOp, ImageOp>;
+// What the painter records: the renderer's drawing items (renderer.hpp) in layout units, and
+// the figure's labels and rasters.
+using Op = std::variant<render::StrokeItem, render::PathStrokeItem, render::FillItem, render::DiskItem, render::RingItem,
+                        render::MarkerItem, TextOp, ImageOp>;
 
 class Painter : public TextMeasure {
  public:
@@ -80,20 +56,26 @@ class Painter : public TextMeasure {
   const std::vector<Op>& ops() const { return ops_; }
   // Drops the ops from `n` on (a panel drawn again).
   void truncate(std::size_t n) {
-    if (n < ops_.size()) ops_.resize(n), op_origin_.resize(n);
+    if (n < ops_.size()) ops_.resize(n), notes_.resize(n);
   }
 
   // "FILE:LINE: KEY" of the spec table whose drawing follows; every op records it, so that an
   // error found when the op is painted names that table.
   void set_origin(const SpecLocation& origin);
   const SpecLocation& origin_of(std::size_t op) const;
+  // Whether the op is a hairline (snapped to the pixel grid in raster output).
+  bool hairline_at(std::size_t op) const { return notes_[op].hairline; }
 
  private:
-  void add(Op op);
+  void add(Op op, bool hairline = false);
 
   std::vector<Op> ops_;
   std::vector<SpecLocation> origins_{SpecLocation()};
-  std::vector<std::uint32_t> op_origin_;  // index into origins_, per op
+  struct Note {
+    std::uint32_t origin;  // index into origins_
+    bool hairline;
+  };
+  std::vector<Note> notes_;  // per op
 };
 
 // Width and height of a raster in its own pixels (reads the file header if needed).
