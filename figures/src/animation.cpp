@@ -111,7 +111,7 @@ FigureSpec animation_frame_spec(const FigureSpec& spec, int i) {
   f.path = spec.path;
   f.title = spec.title;
   f.show_title = spec.show_title;
-  f.title_size = spec.title_size;
+  f.sizes = spec.sizes;
   f.font_family = spec.font_family;
   f.title_origin = spec.title_origin;
   f.canvas = spec.canvas;

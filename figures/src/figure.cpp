@@ -88,7 +88,7 @@ AxesInfo draw_panel(PreparedAxes& prepared, const AxesSpec& spec, const Rect& ce
   AxesInfo info;
   std::vector<Entry> entries;
   const std::size_t first_op = p.ops().size();
-  draw_elements(prepared, panel, p, occ, info.series, entries, info.data_ink);
+  draw_elements(prepared, panel, p, occ, info.series, entries, info.data_ink, g);
   const std::size_t end_op = p.ops().size();
   draw_over(ax, panel, p, g);
   const std::optional<Rect> legend = draw_legend(ax, panel, entries, p, occ, g, require_free, crowded);
@@ -172,12 +172,12 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   info.source = spec.source;
   info.width = static_cast<int>(std::round(spec.canvas.width * scale));
   info.height = static_cast<int>(std::round(spec.canvas.height * scale));
-  const Guides g;
+  const Guides g(spec.sizes);
   const double W = spec.canvas.width, H = spec.canvas.height;
   const Layout& L = spec.layout;
   double top = L.margin;
   if (spec.show_title && !spec.title.empty()) {
-    Font tf{spec.title_size, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
+    Font tf{spec.sizes.title, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
     const SpecLocation origin = spec.title_origin.empty() ? SpecLocation{spec.path, 0, "title"} : spec.title_origin;
     p.set_origin(origin);
     // A title wider than the canvas's margins shrinks to fit them, else to fit the canvas (not
@@ -203,7 +203,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
       }
     }
     p.text(spec.title, {0.5 * W, L.margin}, tf, {render::HAlign::Center, render::VAlign::Top});
-    top += spec.title_size * 1.25 + 10;
+    top += spec.sizes.title * 1.25 + 10;
   }
   // The panel grid fills the rest of the canvas.
   const PanelGrid grid{L.margin,

@@ -22,7 +22,7 @@ TEST_CASE("text and title sizes over 4096 px are refused by the loader, and afte
   check_refused("big_text", "[[text]]\nat = [10, 10]\ntext = \"hi\"\nsize = 1e6\n",
                 "big_text.toml:4: text[0].size: font size 1e+06 is over the limit of 4096 px");
   check_refused("big_title", "title = \"hi\"\ntitle_size = 70000\n",
-                "big_title.toml:2: title_size: font size over the limit of 4096 px");
+                "big_title.toml:2: title_size: font size 70000 is over the limit of 4096 px");
   check_refused("scaled_title", "title = \"hi\"\ntitle_size = 2000\n", "scaled_title.toml:2: title_size: text: font size",
                 {"--scale", "4"});
   check_refused("scaled_text", "[canvas]\nwidth = 100\nheight = 100\n[[text]]\nat = [10, 10]\ntext = \"hi\"\nsize = 3000\n",

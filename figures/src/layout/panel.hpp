@@ -25,8 +25,17 @@ struct Rect {
   Rect inflated(double d) const { return {left - d, top - d, right + d, bottom + d}; }
 };
 
-// The look of the guides (docs/figures.md, house style).
+// The look of the guides (docs/figures.md, house style), their fonts of the figure's text
+// sizes (pixels at 1x; the defaults those of a spec without a print width).
 struct Guides {
+  static Color ink() { return *render::parse_hex_color("#1a1a1a"); }
+  Guides() = default;
+  explicit Guides(const TextSizes& s)
+      : tick_font{s.tick, ink(), false, std::nullopt},
+        label_font{s.label, ink(), false, std::nullopt},
+        title_font{s.panel_title, ink(), true, std::nullopt},
+        legend_font{s.legend, ink(), false, std::nullopt},
+        inline_font{s.inline_label, {}, false, std::nullopt} {}
   Color axis = *render::parse_hex_color("#333333");
   Color grid = *render::parse_hex_color("#e6e6e6");
   Color zero = *render::parse_hex_color("#b3b3b3");
@@ -34,6 +43,7 @@ struct Guides {
   Font label_font{13, *render::parse_hex_color("#1a1a1a"), false, std::nullopt};
   Font title_font{14, *render::parse_hex_color("#1a1a1a"), true, std::nullopt};
   Font legend_font{12, *render::parse_hex_color("#1a1a1a"), false, std::nullopt};
+  Font inline_font{15, {}, false, std::nullopt};  // labels set beside the data, in their element's colour
   double tick_length = 5;
 };
 
@@ -106,6 +116,8 @@ inline constexpr double kTickLabelGap = 4, kTextGap = 2;
 // a row's height and the gap between columns.
 inline constexpr double kLegendInset = 10;
 inline constexpr double kLegendPad = 8, kLegendSample = 28, kLegendGap = 8, kLegendRow = 19, kLegendColumnGap = 16;
+// A legend row's height for the guides' legend font: kLegendRow for the 12 px font, in proportion.
+inline double legend_row(const Guides& g) { return kLegendRow * g.legend_font.size / 12; }
 // A legend of `entries` asked for `columns` columns is filled column by column (down the first
 // column, then the next): its rows, and the columns that takes (fewer when the last would be
 // empty, 6 entries in 5 columns take 3 of 2 rows).

@@ -157,13 +157,13 @@ std::array<double, 2> legend_size(const AxesSpec& ax, const std::vector<std::str
   double title_h = 0;
   if (!ax.legend_title.empty()) {
     text_w = std::max(text_w, p.measure(ax.legend_title, tf).width - kLegendSample - kLegendGap);
-    title_h = kLegendRow;
+    title_h = legend_row(g);
   }
   const int cols = legend_columns_used(ax.legend_columns, labels.size());
   const int rows = legend_rows(ax.legend_columns, labels.size());
   const double col_w = kLegendSample + kLegendGap + text_w + kLegendColumnGap;
   return {std::ceil(kLegendPad + cols * col_w - kLegendColumnGap + kLegendPad),
-          std::ceil(kLegendPad + title_h + kLegendRow * rows + kLegendPad - 4)};
+          std::ceil(kLegendPad + title_h + legend_row(g) * rows + kLegendPad - 4)};
 }
 
 std::vector<std::string> legend_labels(const AxesSpec& ax) {

@@ -12,10 +12,13 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace splinefig::figures {
@@ -99,11 +102,54 @@ void check_canvas(TableReader& r, const Canvas& c) {
                          " pixels is over the limit of 2^28");
 }
 
+// The largest print width taken, in inches (25 m: a poster's is a few metres).
+constexpr double kMaxPrintWidthInches = 1000;
+
+// `print_width`: a number of inches, or a string of a number and a unit, "3.5in", "89mm",
+// "8.9cm", "252pt" (a point 1/72 in); positive, finite and at most kMaxPrintWidthInches.
+PrintWidth parse_print_width(TableReader& r) {
+  static constexpr const char* kForms = "\"3.5in\", \"89mm\", \"8.9cm\", \"252pt\" or a number of inches";
+  const toml::node* n = r.node("print_width");
+  PrintWidth pw;
+  pw.origin = r.origin("print_width");
+  std::string shown;  // as written, for messages
+  if (n->is_string()) {
+    const std::string written = r.string("print_width", "");
+    shown = excerpt(written);
+    // A sign, a decimal number, a unit; spaces around them allowed.
+    static const std::regex re(R"(\s*([+-]?)\s*([0-9]*\.?[0-9]+(?:[eE][+-]?[0-9]+)?)\s*([A-Za-z]*)\s*)");
+    std::smatch m;
+    if (!std::regex_match(written, m, re)) r.fail("print_width", shown + " is not a length: write " + kForms);
+    const std::string number = m[2], unit = m[3];
+    static const std::vector<std::pair<std::string, double>> kUnits = {
+        {"in", 1}, {"mm", 1 / 25.4}, {"cm", 1 / 2.54}, {"pt", 1 / 72.0}};
+    const auto u = std::find_if(kUnits.begin(), kUnits.end(), [&](const auto& k) { return k.first == unit; });
+    if (unit.empty()) r.fail("print_width", shown + " has no unit: write " + kForms);
+    if (u == kUnits.end()) r.fail("print_width", "unknown unit " + excerpt(unit) + " in " + shown + ": write " + kForms);
+    double v = 0;
+    if (std::from_chars(number.data(), number.data() + number.size(), v).ec != std::errc())
+      r.fail("print_width", shown + " is out of range");  // the regex took a number: too large or small
+    pw.inches = (m[1] == "-" ? -v : v) * u->second;
+  } else if (n->is_number()) {
+    pw.inches = r.number("print_width", 0);  // NaN and infinities are refused here
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", pw.inches);
+    shown = buf;
+  } else {
+    r.fail("print_width", std::string("must be a length: ") + kForms);
+  }
+  if (!std::isfinite(pw.inches)) r.fail("print_width", shown + " is not finite");
+  if (!(pw.inches > 0)) r.fail("print_width", "must be positive, found " + shown);
+  if (pw.inches > kMaxPrintWidthInches) r.fail("print_width", shown + " is over the limit of 1000 in");
+  return pw;
+}
+
 Canvas parse_canvas(TableReader& r) {
   Canvas c;
   c.width = r.integer("width", c.width, 1, 1 << 30);
   c.height = r.integer("height", c.height, 1, 1 << 30);
   check_canvas(r, c);
+  if (r.has("print_width")) c.print_width = parse_print_width(r);
   c.background = r.color("background", c.background);
   if (auto spec = r.opt_string("filter")) {
     c.filter = kernel_value(r, "filter", *spec);
@@ -280,6 +326,7 @@ TextItem parse_text(TableReader& r) {
   TextItem t;
   t.at = r.required_point("at", "text needs at = [x, y]");
   t.text = r.required_label("text", "text needs text = \"...\"");
+  t.font.size = r.text_size();
   t.font = r.font(t.font);
   t.anchor = r.anchor(t.anchor);
   r.finish();
@@ -301,6 +348,31 @@ ImageItem parse_image(TableReader& r, const ParseContext& ctx) {
 }
 
 }  // namespace
+
+// The font sizes of the text roles (top-level keys), in pixels at 1x: given in points with a
+// print width (the defaults kTextSizesPt), else in pixels (the defaults TextSizes{}).
+TextSizes text_sizes(TableReader& r, const Canvas& canvas) {
+  const double unit = canvas.px_per_pt();
+  TextSizes s;
+  if (canvas.print_width) {
+    const TextSizes& pt = kTextSizesPt;
+    s = {pt.title * unit, pt.panel_title * unit, pt.label * unit, pt.tick * unit,
+         pt.legend * unit, pt.inline_label * unit, pt.text * unit};
+  }
+  r.set_text_units(canvas.print_width ? unit : 1, s.text);
+  const std::pair<const char*, double*> keys[] = {
+      {"title_size", &s.title},   {"panel_title_size", &s.panel_title}, {"label_size", &s.label},
+      {"tick_size", &s.tick},     {"legend_size", &s.legend},           {"inline_label_size", &s.inline_label},
+      {"text_size", &s.text}};
+  for (const auto& [key, size] : keys) {
+    if (!r.has(key) && *size > kMaxFontSize)  // a default, made too large by a tiny print width
+      throw SpecFileError(canvas.print_width->origin, "makes the default " + std::string(key) + " " +
+                                                          std::to_string(static_cast<long long>(*size)) +
+                                                          " px, over the limit of 4096 px");
+    *size = r.font_size(key, *size);
+  }
+  return s;
+}
 
 // An item with its source line (for document order) and its location (for messages).
 struct Placed {
@@ -376,16 +448,17 @@ FigureSpec read_spec(std::string_view text, const std::string& name, const std::
   spec.source = r.string("source", "");
   spec.caption_fields = parse_caption_fields(r, spec.caption, r.origin("caption"));
   spec.show_title = r.boolean("show_title", true);
-  spec.title_size = r.positive("title_size", spec.title_size);
   spec.font_family = r.font_family("font_family", spec.font_family);
-  if (spec.title_size > kMaxFontSize) r.fail("title_size", "font size over the limit of 4096 px");
-  spec.title_origin = r.origin(r.has("title_size") ? "title_size" : "title");
   r.number("order", 0);  // gallery order (catalog.cpp reads it)
+  // [canvas] first: its print width makes every font size a size in points.
   if (auto t = r.tables("canvas"); !t.empty()) {
     if (t.size() > 1) r.fail("canvas", "only one [canvas] table");
     TableReader c(*t[0], name, "canvas");
     spec.canvas = parse_canvas(c);
   }
+  spec.sizes = text_sizes(r, spec.canvas);
+  r.set_text_units(spec.canvas.print_width ? spec.canvas.px_per_pt() : 1, spec.sizes.text);
+  spec.title_origin = r.origin(r.has("title_size") ? "title_size" : "title");
   if (auto t = r.tables("layout"); !t.empty()) {
     if (t.size() > 1) r.fail("layout", "only one [layout] table");
     TableReader l(*t[0], name, "layout");

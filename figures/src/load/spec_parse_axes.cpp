@@ -168,6 +168,7 @@ TextElement parse_text_element(TableReader& r) {
   t.at = r.required_point("at", "text needs at = [x, y] (data)");
   t.text = r.required_label("text", "text needs text = \"...\"");
   t.offset = r.opt_point("offset").value_or(Vec2{0, 0});
+  t.font.size = r.text_size();
   t.font = r.font(t.font);
   t.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
   return t;
@@ -178,6 +179,7 @@ AnnotationElement parse_annotation(TableReader& r) {
   a.at = r.required_point("at", "an annotation needs at = [x, y] (the text, data)");
   a.to = r.required_point("to", "an annotation needs to = [x, y] (the arrow's tip, data)");
   a.text = r.required_label("text", "an annotation needs text = \"...\"");
+  a.font.size = r.text_size();
   a.font = r.font(a.font);
   a.anchor = r.anchor({render::HAlign::Center, render::VAlign::Middle});
   a.arrow_color = r.color("arrow_color", a.font.color);

@@ -474,9 +474,18 @@ render::StrokeStyle TableReader::stroke(render::StrokeStyle s) {
   return s;
 }
 
+double TableReader::font_size(std::string_view key, double fallback) {
+  if (!has(key)) return fallback;
+  const double given = positive(key, 1), size = given * px_per_size_unit_;
+  if (size > kMaxFontSize) {
+    if (px_per_size_unit_ == 1) fail(key, "font size " + shortest(given) + " is over the limit of 4096 px");
+    fail(key, "font size " + shortest(given) + " pt is " + shortest(size) + " px at the print width, over the limit of 4096 px");
+  }
+  return size;
+}
+
 Font TableReader::font(Font f, std::string_view size_key, std::string_view color_key) {
-  f.size = positive(size_key, f.size);
-  if (f.size > kMaxFontSize) fail(size_key, "font size " + shortest(f.size) + " is over the limit of 4096 px");
+  f.size = font_size(size_key, f.size);
   f.color = color(color_key, f.color);
   f.bold = boolean("bold", f.bold);
   if (node("font_family")) f.family = font_family("font_family", render::FontFamily::Sans);

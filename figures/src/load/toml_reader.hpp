@@ -76,6 +76,7 @@ class TableReader {
     for (const toml::table* t : tables(key)) {
       TableReader sub(*t, file_, single ? key_path(key) : key_path(key) + "[" + std::to_string(i++) + "]");
       sub.set_data(data_);
+      sub.set_text_units(px_per_size_unit_, text_size_);
       read(sub, *t);
       sub.finish();
     }
@@ -99,7 +100,19 @@ class TableReader {
   // The stroke keys shared by every stroked element: width, join, miter_limit, cap, dash,
   // dash_offset. `width` must be >= 0 (0 draws nothing).
   render::StrokeStyle stroke(render::StrokeStyle fallback);
+  // A text's font keys; the size, when given, is in the figure's unit of font size (points with
+  // a print width, else pixels) and comes back in pixels at 1x.
   Font font(Font fallback, std::string_view size_key = "size", std::string_view color_key = "color");
+  // A font size key of the figure's unit (as font() reads `size`), in pixels at 1x; `fallback`
+  // is in pixels already. At most kMaxFontSize pixels.
+  double font_size(std::string_view key, double fallback);
+  // Pixels at 1x per unit of a font size key (1, or pixels per point with a print width), and the
+  // size in pixels of a text item without one (TextSizes::text); sub-tables inherit them.
+  void set_text_units(double px_per_size_unit, double text_size) {
+    px_per_size_unit_ = px_per_size_unit;
+    text_size_ = text_size;
+  }
+  double text_size() const { return text_size_; }
   // "sans" | "serif" | "mono".
   render::FontFamily font_family(std::string_view key, render::FontFamily fallback);
   TextAnchor anchor(TextAnchor fallback);
@@ -111,6 +124,7 @@ class TableReader {
   std::string file_, path_;
   std::set<std::string, std::less<>> used_;
   const PointSource* data_ = nullptr;
+  double px_per_size_unit_ = 1, text_size_ = TextSizes{}.text;
 };
 
 // `file` and the line where `where` begins (none when the parser gave none).

@@ -54,7 +54,8 @@ struct Entry {
 void draw_under(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
 // Draws the elements; returns the series for index.json and the legend entries.
 void draw_elements(const PreparedAxes& ax, const Panel& panel, Painter& p, Occupancy& occ,
-                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend, std::vector<AxesInfo::DataInk>& ink);
+                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend, std::vector<AxesInfo::DataInk>& ink,
+                   const Guides& g);
 // Frame, ticks, tick labels, axis labels, title (over the data), then the legend.
 void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides& g);
 // Returns the legend's rectangle (none when nothing is drawn).

@@ -167,8 +167,7 @@ class ElementPainter {
   }
 
   // The inline labels, after every element is drawn (so they avoid all the data).
-  void place_inline_labels() {
-    Font font{15, {}, false, std::nullopt};
+  void place_inline_labels(Font font) {
     for (auto& il : inline_) {
       font.color = il.color;
       if (il.offset) {
@@ -403,7 +402,8 @@ void draw_image_element(const ImageElement& im, ElementPainter& d) {
 }  // namespace
 
 void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p, Occupancy& occ,
-                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend, std::vector<AxesInfo::DataInk>& ink) {
+                   std::vector<SeriesInfo>& series, std::vector<Entry>& legend, std::vector<AxesInfo::DataInk>& ink,
+                   const Guides& g) {
   const AxesSpec& ax = prepared.axes;
   ElementPainter d(ax, panel, p, occ, series, legend, ink);
   for (size_t i = 0; i < ax.elements.size(); ++i) {
@@ -425,7 +425,7 @@ void draw_elements(const PreparedAxes& prepared, const Panel& panel, Painter& p,
         ax.elements[i]); });
   }
   p.set_origin(ax.where.with_key("axes"));
-  d.place_inline_labels();
+  d.place_inline_labels(g.inline_font);
 }
 
 }  // namespace splinefig::figures::detail

@@ -117,7 +117,7 @@ Vec2 place_label(const std::string& text, const Font& f, const std::vector<Vec2>
 }
 
 namespace {
-constexpr double kPad = kLegendPad, kSample = kLegendSample, kGap = kLegendGap, kRow = kLegendRow,
+constexpr double kPad = kLegendPad, kSample = kLegendSample, kGap = kLegendGap,
                  kColumnGap = kLegendColumnGap;
 }  // namespace
 
@@ -135,7 +135,7 @@ std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const st
   for (const Entry& e : drawn)
     if (std::none_of(entries.begin(), entries.end(), [&](const Entry& x) { return x.label == e.label; })) entries.push_back(e);
   const Font& f = g.legend_font;
-  const double pad = kPad, sample = kSample, gap = kGap, row = kRow;
+  const double pad = kPad, sample = kSample, gap = kGap, row = legend_row(g);
   Font tf = f;
   tf.bold = true;
   std::vector<std::string> labels;

@@ -53,8 +53,18 @@ struct SpecFileError : ErrorOf<std::runtime_error, ErrorKind::bad_input> {
 
 // The limits a spec is checked against (canvas, marks, key parts, ...) are in base/limits.hpp.
 
+// How wide a figure is printed (docs/spec.md, `[canvas] print_width`): read once from the spec
+// ("3.5in", "89mm", "8.9cm", "252pt" or a number of inches), with where it was written.
+struct PrintWidth {
+  double inches = 0;  // > 0 and finite
+  SpecLocation origin;
+};
+
 struct Canvas {
   int width = 800, height = 500;
+  // Unset: font sizes are pixels at 1x. Set: they are points of the printed figure, a point
+  // being px_per_pt() pixels at 1x.
+  std::optional<PrintWidth> print_width;
   Color background{1, 1, 1, 1};
   // The pixel filter: box, tent or a basis spec, read as the kernel and checked as the renderer
   // checks one (render::validate_pixel_filter).
@@ -66,7 +76,24 @@ struct Canvas {
   // The coverage error accepted in a pixel where a dense stroke is drawn from its pieces, in
   // [0, 1]; 0 asks for the exact sweep everywhere (render::Scene::set_coverage_tolerance).
   double coverage_tolerance = render::kDefaultCoverageTolerance;
+  // Pixels at 1x per printed point, width / (print width in inches x 72); 0 without a print width.
+  double px_per_pt() const { return print_width ? width / (print_width->inches * 72) : 0; }
 };
+
+// The font sizes of a figure's text roles, in pixels at 1x. A spec with a print width states
+// them in points (docs/spec.md): they are converted once, when it is read. These defaults are
+// the sizes of a spec without a print width.
+struct TextSizes {
+  double title = 18;         // the figure's title (bold)
+  double panel_title = 14;   // an axes' title (bold)
+  double label = 13;         // axis labels
+  double tick = 12;          // tick labels
+  double legend = 12;        // legend entries and the legend's title
+  double inline_label = 15;  // element labels set beside the data
+  double text = 13;          // [[text]], [[axes.text]] and [[axes.annotation]] without a size
+};
+// The defaults in points, for a spec with a print width.
+inline constexpr TextSizes kTextSizesPt{10, 9, 9, 8, 8, 9, 8};
 
 // A stroke's look: width in pixels at 1x, colour, joins, caps and dashes.
 struct Pen {
@@ -458,9 +485,9 @@ struct FigureSpec {
   std::string source;   // the figure of the source texts it reproduces or illustrates, as a reader cites it
   std::vector<CaptionField> caption_fields;
   bool show_title = true;
-  double title_size = 18;
+  TextSizes sizes;  // pixels at 1x
   render::FontFamily font_family = render::FontFamily::Sans;  // of every text without its own
-  SpecLocation title_origin;  // of title_size (or title), for messages
+  SpecLocation title_origin;  // of title_size (or title, or canvas.print_width), for messages
   Canvas canvas;
   Layout layout;
   std::vector<Item> items;  // in document order
