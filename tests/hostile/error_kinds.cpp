@@ -17,6 +17,7 @@
 #include <splinefig/spline/interp.hpp>
 #include <splinefig/spline/points_csv.hpp>
 #include <splinefig/spline/subdivision.hpp>
+#include <splinefig/vector/vector.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -77,6 +78,28 @@ TEST_CASE("a bad argument to any library is its library's error type, whose kind
     compare::compare_images(a, a, compare::Options{}, &mask);
   }));
   CHECK(throws_typed<figures::TickError>([] { figures::nice_ticks(0, 1, 5, 1e-300); }));
+  // vector/: its own option checks are VectorError (refused before any file is made) ...
+  for (const auto format : {vector::VectorFormat::svg, vector::VectorFormat::pdf}) {
+    CHECK(throws_typed<vector::VectorError>([&] {
+      vector::Options o;
+      o.dpi = 1e9;
+      vector::write_vector("/nonexistent/never", render::Scene(4, 4), format, o);
+    }));
+  }
+  // ... and an item it refuses keeps the renderer's type in either format (a clipped item).
+  auto clipped = [] {
+    render::Scene s(8, 8);
+    render::Path box;
+    box.move_to({1, 1});
+    box.line_to({6, 1});
+    box.line_to({6, 6});
+    box.close();
+    s.set_clip(box);
+    s.fill_circle({4, 4}, 3, {0, 0, 0, 1});
+    return s;
+  };
+  CHECK(throws_typed<render::DrawError>([&] { vector::to_svg(clipped()); }));
+  CHECK(throws_typed<render::DrawError>([&] { vector::to_pdf(clipped()); }));
 }
 
 TEST_CASE("bad input to the library is a bad_input error and still its standard exception") {

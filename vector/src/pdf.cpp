@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <exception>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <variant>
 
@@ -185,21 +185,23 @@ std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& o) 
     cairo_set_source_rgba(cr, s.r, s.g, s.b, s.a);
     cairo_paint(cr);
   }
-  std::string error;
+  // An item the writer refuses (a clipped one: render::DrawError) ends the document first, then
+  // leaves as itself, with its own type and kind.
+  std::exception_ptr refused;
   try {
     PdfWriter w(cr);
     for (const render::DrawItem& item : detail::unclipped_items(scene)) std::visit(w, item);
-  } catch (const std::exception& e) {
-    error = e.what();
+  } catch (...) {
+    refused = std::current_exception();
   }
   const cairo_status_t st = cairo_status(cr);
   cairo_destroy(cr);
   cairo_surface_finish(surface);
   const cairo_status_t sst = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
-  if (!error.empty()) throw std::runtime_error(error);
+  if (refused) std::rethrow_exception(refused);
   if (st != CAIRO_STATUS_SUCCESS || sst != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(std::string("PDF: ") + cairo_status_to_string(st != CAIRO_STATUS_SUCCESS ? st : sst));
+    throw VectorError(std::string("PDF: ") + cairo_status_to_string(st != CAIRO_STATUS_SUCCESS ? st : sst));
   return bytes;
 }
 

@@ -1,11 +1,11 @@
 #include "raster.hpp"
 
 #include <splinefig/image/srgb.hpp>
+#include <splinefig/vector/vector.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
 
 namespace splinefig::vector::detail {
 
@@ -30,7 +30,7 @@ cairo_surface_t* image_surface(const Image& im) {
   cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, im.width, im.height);
   if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(s);
-    throw std::runtime_error("vector: cannot make a " + std::to_string(im.width) + "x" + std::to_string(im.height) + " image");
+    throw VectorError("vector: cannot make a " + std::to_string(im.width) + "x" + std::to_string(im.height) + " image");
   }
   cairo_surface_flush(s);
   unsigned char* data = cairo_image_surface_get_data(s);
@@ -63,7 +63,7 @@ std::vector<unsigned char> png_bytes(const Image& im) {
   };
   const cairo_status_t st = cairo_surface_write_to_png_stream(s, write, &out);
   cairo_surface_destroy(s);
-  if (st != CAIRO_STATUS_SUCCESS) throw std::runtime_error(std::string("vector: PNG encoding failed: ") + cairo_status_to_string(st));
+  if (st != CAIRO_STATUS_SUCCESS) throw VectorError(std::string("vector: PNG encoding failed: ") + cairo_status_to_string(st));
   return out;
 }
 

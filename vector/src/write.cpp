@@ -3,7 +3,6 @@
 #include <splinefig/vector/vector.hpp>
 
 #include <cstdio>
-#include <stdexcept>
 
 namespace splinefig::vector {
 
@@ -18,7 +17,7 @@ void write_vector(const std::string& path, const render::Scene& scene, VectorFor
   if (o.dpi != 0 && !(o.dpi >= kMinDpi && o.dpi <= kMaxDpi)) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "dpi %g is outside [%g, %g]", o.dpi, kMinDpi, kMaxDpi);
-    throw std::invalid_argument(buf);
+    throw VectorError(buf);
   }
   if (format == VectorFormat::svg) {
     const std::string s = to_svg(scene, o);

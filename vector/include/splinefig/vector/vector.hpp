@@ -5,6 +5,7 @@
 // caps, miter limit and dashes (both formats paint a stroke as one shape, the union of its
 // pieces, as the rasterizer does); circles are circles; raster items are embedded as PNG at
 // their own pixel size. See docs/vector.md.
+#include <splinefig/base/error.hpp>
 #include <splinefig/renderer/renderer.hpp>
 
 #include <optional>
@@ -13,6 +14,14 @@
 #include <vector>
 
 namespace splinefig::vector {
+
+// A scene or option the vector writers cannot write: a dpi outside [kMinDpi, kMaxDpi], a raster
+// item Cairo cannot hold as an image, or Cairo's own failure to make the PDF. The message names
+// the value. (A scene item the renderer refuses stays its render::DrawError; a file that cannot
+// be written is UnwritableFile.)
+struct VectorError : ErrorOf<std::invalid_argument, ErrorKind::bad_input> {
+  using ErrorOf::ErrorOf;
+};
 
 struct Options {
   // Pixels per inch of the scene's pixels (kMinDpi to kMaxDpi): the physical size is width/dpi inches. 0: the CSS
@@ -41,7 +50,7 @@ inline bool is_vector_file(const std::string& path) { return vector_format_of(pa
 std::string xml_escape(std::string_view text);
 
 // Writes to_svg or to_pdf, atomically (image/atomic_file.hpp). Throws UnwritableFile naming the
-// path, std::invalid_argument for a dpi outside [kMinDpi, kMaxDpi] (base/limits.hpp).
+// path, VectorError for a dpi outside [kMinDpi, kMaxDpi] (base/limits.hpp).
 void write_vector(const std::string& path, const render::Scene& scene, VectorFormat format, const Options& options = {});
 // As above, in the format the extension names; UnwritableFile for another extension.
 void write_vector(const std::string& path, const render::Scene& scene, const Options& options = {});
