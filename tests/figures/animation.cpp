@@ -65,7 +65,12 @@ std::string frame_spec(int i, const std::array<double, 2>& xr, const std::array<
   const double t = i / 6.0;
   char label[64];
   std::snprintf(label, sizeof label, "$t$ = %.2f%s", t, i % 6 == 0 ? ", a key frame" : "");
-  std::string s = "title = \"In-between frames from key frames: spline against linear\"\n"
+  // The figure's text sizes in pixels: its points at 1100 px across 6 in.
+  char sizes[160];
+  const double px_per_pt = 1100.0 / (6 * 72);
+  std::snprintf(sizes, sizeof sizes, "title_size = %.17g\npanel_title_size = %.17g\nlabel_size = %.17g\n", 10 * px_per_pt,
+                9 * px_per_pt, 9 * px_per_pt);
+  std::string s = "title = \"In-between frames from key frames: spline against linear\"\n" + std::string(sizes) +
                   "[canvas]\nwidth = 760\nheight = 420\n[layout]\ncols = 2\n";
   const char* titles[2] = {"relaxed cubic spline through the key frames", "linear in-betweening (the jerky one)"};
   for (int panel = 0; panel < 2; ++panel) {
