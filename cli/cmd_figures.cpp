@@ -4,6 +4,7 @@
 // The index is written only after every image of the run: a figure that fails keeps its
 // previous entry (and its previous images), and a run that renders nothing leaves the index alone.
 #include "command.hpp"
+#include "raster_report.hpp"
 
 #include <splinefig/figures/batch.hpp>
 #include <splinefig/figures/catalog.hpp>
@@ -38,6 +39,8 @@ struct FiguresArgs {
   double dpi = 0;
   int threads = 0;
   std::string specs;
+  double coverage_tolerance = -1;  // not given: each spec's
+  bool verbose = false;
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -62,6 +65,9 @@ fig::BatchOptions batch_options(const FiguresArgs& a, const CLI::App& app) {
   o.software = std::string("splinefig ") + SPLINEFIG_VERSION;
   o.dpi = splinefig::cli::check_dpi(a.dpi, splinefig::cli::typed_number(app, "--dpi", a.dpi).said);
   o.date = fig::source_date_epoch();
+  if (app.get_option("--coverage-tolerance")->count() > 0)
+    o.coverage_tolerance = splinefig::cli::check_coverage_tolerance(
+        a.coverage_tolerance, splinefig::cli::typed_number(app, "--coverage-tolerance", a.coverage_tolerance).said);
   o.formats.clear();
   for (const auto& f : split(a.format)) {
     const auto format = fig::format_named(f);
@@ -125,6 +131,8 @@ int run(const FiguresArgs& a, const CLI::App& app) {
     if (r.info) {
       std::printf("%s\n", progress_line(r).c_str());
       std::fflush(stdout);
+      if (a.verbose && r.raster_report)
+        std::fprintf(stderr, "splinefig figures: %s: %s\n", r.name.c_str(), splinefig::cli::describe_raster(*r.raster_report).c_str());
       done.push_back(std::move(*r.info));
     } else {
       ++failed;
@@ -162,6 +170,10 @@ const splinefig::cli::Registration reg{
       app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the files (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
           ->type_name("FLOAT")->capture_default_str();
       app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
+      app.add_option("--coverage-tolerance", a->coverage_tolerance,
+                     "Coverage error accepted where a dense stroke is drawn from its pieces, in [0, 1] (0: exact everywhere); replaces every spec's [canvas] coverage_tolerance")
+          ->type_name("FLOAT");
+      app.add_flag("-v,--verbose", a->verbose, "Say on stderr, per figure, how it was rasterized: exactly, or which items had bands drawn within the coverage tolerance");
       app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones")->type_name("PATH");
       app.footer("Example: splinefig figures --out out/figures --only bias,arclength --scale 2 --format png,svg");
       return splinefig::cli::Runner([a, &app] { return run(*a, app); });

@@ -1,7 +1,9 @@
-// `splinefig render SPEC.toml -o OUT.(png|exr|svg|pdf|webp) [--scale S] [--dpi N] [--threads N]`:
+// `splinefig render SPEC.toml -o OUT.(png|exr|svg|pdf|webp) [--scale S] [--dpi N] [--threads N]
+// [--coverage-tolerance T] [-v]`:
 // one figure spec (docs/spec.md) rendered to one file, the format chosen by the extension
 // (.webp: the spec's [animation], an animated WebP).
 #include "command.hpp"
+#include "raster_report.hpp"
 #include "stdio.hpp"
 
 #include <splinefig/figures/animation.hpp>
@@ -47,6 +49,8 @@ struct RenderArgs {
   double scale = 1;
   double dpi = 0;
   int threads = 0;
+  double coverage_tolerance = -1;  // not given: the spec's
+  bool verbose = false;
 };
 
 const splinefig::cli::Registration reg{
@@ -63,6 +67,10 @@ const splinefig::cli::Registration reg{
       app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
           ->type_name("FLOAT")->capture_default_str();
       app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
+      app.add_option("--coverage-tolerance", a->coverage_tolerance,
+                     "Coverage error accepted where a dense stroke is drawn from its pieces, in [0, 1] (0: exact everywhere); replaces the spec's [canvas] coverage_tolerance")
+          ->type_name("FLOAT");
+      app.add_flag("-v,--verbose", a->verbose, "Say on stderr how the picture was rasterized: exactly, or which items had bands drawn within the coverage tolerance");
       app.footer("Example: splinefig render figures/specs/bias.toml -o bias.svg --scale 2");
       return splinefig::cli::Runner([a, &app] {
         using splinefig::cli::Failure;
@@ -98,12 +106,17 @@ const splinefig::cli::Registration reg{
           throw Failure("-o " + a->out + ": it is the spec " + a->spec);
         splinefig::cli::check_output_scale(a->scale, splinefig::cli::typed_number(app, "--scale", a->scale).said);
         const int threads = splinefig::cli::check_threads(a->threads);
+        const bool tolerance_given = app.get_option("--coverage-tolerance")->count() > 0;
+        if (tolerance_given)
+          splinefig::cli::check_coverage_tolerance(
+              a->coverage_tolerance, splinefig::cli::typed_number(app, "--coverage-tolerance", a->coverage_tolerance).said);
         const double dpi = splinefig::cli::check_dpi(a->dpi, splinefig::cli::typed_number(app, "--dpi", a->dpi).said);
         const std::string spec_name = from_stdin ? "stdin" : a->spec;
         std::string need;  // the scaled canvas, for a message about memory (as figures says it)
         try {
           const std::string text = from_stdin ? splinefig::cli::read_stdin_bytes("the spec", splinefig::kMaxSpecBytes) : "";
           fig::FigureSpec spec = from_stdin ? fig::parse_spec(text, "stdin", ".") : fig::load_spec(a->spec);
+          if (tolerance_given) spec.canvas.coverage_tolerance = a->coverage_tolerance;
           // An output never replaces an input: the spec or a file it names.
           if (std::string bad = to_stdout || from_stdin ? "" : fig::output_over_input({a->out}, {a->spec}); !bad.empty())
             throw Failure("-o " + bad + " (write to another file)");
@@ -124,6 +137,9 @@ const splinefig::cli::Registration reg{
               throw Failure("-o " + a->out + ": a .webp output is the spec's [animation], and " + spec_name + " has none");
             fig::check_animation_size(spec, a->scale);
             fig::write_animation(spec, a->out, a->scale, threads);
+            if (a->verbose)
+              std::fprintf(stderr, "splinefig render: %s: an animation (its frames' rasterization is not reported; render a frame's still to see it)\n",
+                           splinefig::cli::printable(spec_name).c_str());
             return 0;
           }
           const fig::FigureScene f = fig::figure_scene(spec, a->scale);
@@ -134,6 +150,8 @@ const splinefig::cli::Registration reg{
           w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
           w.title = fig::file_title(spec);
           w.date = fig::source_date_epoch();
+          splinefig::render::RasterReport report;
+          w.report = &report;
           std::optional<splinefig::Image> raster;
           try {
             splinefig::cli::Scratch scratch;
@@ -148,6 +166,10 @@ const splinefig::cli::Registration reg{
           } catch (const std::length_error& e) {  // an item past the rasterizer's work limit
             throw Failure(a->spec + ": " + e.what());
           }
+          if (a->verbose)
+            std::fprintf(stderr, "splinefig render: %s: %s\n", splinefig::cli::printable(spec_name).c_str(),
+                         raster ? splinefig::cli::describe_raster(report).c_str()
+                                : "not rasterized (the vector file keeps the exact curves)");
         } catch (const std::bad_alloc&) {
           // One line naming the spec and what it needed, not a bare "std::bad_alloc".
           throw Failure(spec_name + ": out of memory " +

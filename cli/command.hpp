@@ -134,6 +134,15 @@ inline double check_dpi(double dpi, const std::string& said = "") {
   return dpi;
 }
 
+// --coverage-tolerance T: in [0, 1], a fraction of full coverage (0: the exact sweep everywhere);
+// it replaces the spec's [canvas] coverage_tolerance (docs/renderer.md, "Dense strokes").
+inline double check_coverage_tolerance(double t, const std::string& said = "") {
+  if (!(t >= 0 && t <= 1))
+    throw Failure((said.empty() ? "--coverage-tolerance " + number_text(t) : said) +
+                  ": must be in [0, 1] (a fraction of full coverage; 0: exact)");
+  return t;
+}
+
 // A line on stderr saying what a long command is doing ("splinefig resample: filtering ..."),
 // shown only on a terminal (never when stderr is piped or redirected) and only when `large`;
 // each say() replaces it, and it is erased when the object goes.

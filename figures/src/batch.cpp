@@ -58,7 +58,8 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
   result.name = s.name;
   std::string canvas;  // the scaled canvas, for a message about memory
   try {
-    const FigureSpec spec = load_spec(s.path);
+    FigureSpec spec = load_spec(s.path);
+    if (o.coverage_tolerance) spec.canvas.coverage_tolerance = *o.coverage_tolerance;
     {
       const double w = std::round(spec.canvas.width * o.scale), h = std::round(spec.canvas.height * o.scale);
       char buf[128];
@@ -80,12 +81,15 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     w.software = o.software;
     w.title = file_title(spec);
     w.date = o.date;
+    render::RasterReport report;
+    w.report = &report;
     std::optional<Image> raster;
     for (const auto& format : o.formats) {
       const std::string file = s.name + "." + extension(format);
       write_figure_file(fig, (std::filesystem::path(o.out_dir) / file).string(), format, w, raster);
       fig.info.files.push_back(file);
     }
+    if (raster) result.raster_report = std::move(report);
     // The filmstrips' animation beside the PNG, drawn after the still figure's files.
     if (spec.animation && writes_png(o)) {
       raster.reset();

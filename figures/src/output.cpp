@@ -81,7 +81,7 @@ void write_figure_file(const FigureScene& fig, const std::string& path, Format f
     vector::write_vector(path, fig.scene, format == Format::svg ? vector::VectorFormat::svg : vector::VectorFormat::pdf, v);
     return;
   }
-  if (!raster) raster = render::rasterize(fig.raster, o.threads);
+  if (!raster) raster = render::rasterize(fig.raster, o.threads, o.report);
   WriteOptions w;
   w.software = o.software;
   w.description = o.title;

@@ -56,7 +56,8 @@ TEST_CASE("parse errors: a near miss of a flag is named with the flag meant") {
   // No near miss: the command that has the flag, or its help.
   check_says({"render", spec, "-o", out, "--filter", "mitchell"},
              "splinefig render: unknown option --filter (--filter is an option of resample, not of render)");
-  check_says({"render", spec, "-o", out, "-v"}, "splinefig render: unknown option -v (-v is an option of diff or resample, not of render)");
+  check_says({"kernel", "catmull-rom", "-v"},
+             "splinefig kernel: unknown option -v (-v is an option of diff, figures, render or resample, not of kernel)");
   check_says({"render", spec, "-o", out, "--version"},
              "splinefig render: unknown option --version (--version is an option of splinefig itself: splinefig --version)");
   check_says({"render", spec, "-o", out, "--frobnicate"}, "splinefig render: unknown option --frobnicate (see splinefig render --help)");

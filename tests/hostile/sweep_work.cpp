@@ -68,3 +68,54 @@ TEST_CASE("under the default coverage tolerance a dense polyline is drawn, and t
   for (const char* bad : {"-0.5", "1.5", "nan", "\"fine\""})
     check_refused("bad", canvas + "coverage_tolerance = " + bad + "\n", "bad.toml:4: canvas.coverage_tolerance: ");
 }
+
+TEST_CASE("--coverage-tolerance replaces the spec's, is checked as a flag, and -v says how the picture was drawn") {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 256);
+  std::string spec = "[canvas]\nwidth = 256\nheight = 256\n[[polyline]]\nwidth = 1\npoints = [[4, 4], [9, 6]]\n"
+                     "[[polyline]]\nwidth = 1\npoints = [";
+  char buf[64];
+  for (int i = 0; i < 3000; ++i) {  // dense: about 4e6 crossings, most pixels solid
+    std::snprintf(buf, sizeof buf, "%s[%.3f, %.3f]", i ? ", " : "", u(rng), u(rng));
+    spec += buf;
+  }
+  spec += "]\n";
+  const fs::path dir = scratch();
+  write_file(dir / "dense.toml", spec);
+  // At the default the second item has bands drawn from its pieces; 256 rows are 16 bands.
+  const Outcome dflt = run_in(dir, {"render", "dense.toml", "-o", "default.png", "-v"});
+  REQUIRE(dflt.code == 0);
+  CHECK_THAT(dflt.err, Catch::StartsWith("splinefig render: dense.toml: item 2: ") &&
+                           Catch::Contains(" of 16 bands of 16 rows resolved from its pieces, within the coverage tolerance 1/1024"));
+  // --coverage-tolerance 0: every band swept exactly, and the same picture within one 8-bit step
+  // (the pieces method is exact up to 1e-9 per pixel; float rounding may still tip a value).
+  const Outcome exact = run_in(dir, {"render", "dense.toml", "-o", "exact.png", "-v", "--coverage-tolerance", "0"});
+  REQUIRE(exact.code == 0);
+  CHECK(exact.err == "splinefig render: dense.toml: exact (no band needed the coverage tolerance, 0)\n");
+  CHECK(run_in(dir, {"diff", "exact.png", "default.png", "--fail", "0.0040", "--warn", "0.0040"}).code == 0);
+  // The flag replaces the spec's value: a spec asking for 0 is drawn from pieces with 0.01.
+  write_file(dir / "zero.toml", "[canvas]\nwidth = 256\nheight = 256\ncoverage_tolerance = 0\n" + spec.substr(spec.find("[[polyline]]")));
+  const Outcome over = run_in(dir, {"render", "zero.toml", "-o", "zero.png", "-v", "--coverage-tolerance", "0.01"});
+  REQUIRE(over.code == 0);
+  CHECK_THAT(over.err, Catch::Contains("item 2: ") && Catch::Contains("within the coverage tolerance 1/100 "));
+  // A vector output is not rasterized, and says so.
+  const Outcome svg = run_in(dir, {"render", "dense.toml", "-o", "dense.svg", "-v"});
+  CHECK(svg.err == "splinefig render: dense.toml: not rasterized (the vector file keeps the exact curves)\n");
+  // figures -v: one line per figure.
+  fs::create_directories(dir / "specs");
+  fs::copy_file(dir / "dense.toml", dir / "specs" / "dense.toml");
+  const Outcome all = run_in(dir, {"figures", "--specs", "specs", "--out", "out", "-v", "--coverage-tolerance", "1/1024"});
+  CHECK(all.code != 0);  // "1/1024" is not a number
+  const Outcome figs = run_in(dir, {"figures", "--specs", "specs", "--out", "out", "-v", "--coverage-tolerance", "0.0009765625"});
+  REQUIRE(figs.code == 0);
+  CHECK_THAT(figs.err, Catch::StartsWith("splinefig figures: dense: item 2: ") && Catch::Contains("tolerance 1/1024 "));
+  // Out of range, NaN: one line naming the flag, nothing written.
+  for (const char* bad : {"-0.5", "1.5", "nan", "inf"}) {
+    const Outcome o = run_in(dir, {"render", "dense.toml", "-o", "bad.png", "--coverage-tolerance", bad});
+    INFO(bad << ": " << o.err);
+    CHECK(o.code != 0);
+    CHECK_THAT(o.err, Catch::Contains("--coverage-tolerance ") && Catch::Contains(": must be in [0, 1]"));
+    CHECK_FALSE(fs::exists(dir / "bad.png"));
+  }
+  fs::remove_all(dir);
+}

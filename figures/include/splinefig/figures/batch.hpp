@@ -20,6 +20,8 @@ struct BatchOptions {
   std::string software;                      // image metadata ("splinefig 1.2.3")
   double dpi = 0;                            // spec pixels per inch (output.hpp); 0: none
   long long date = -1;                       // PDF creation date, seconds since 1970; none if < 0
+  // Replaces every spec's [canvas] coverage_tolerance (in [0, 1]) when set.
+  std::optional<double> coverage_tolerance;
 };
 
 struct BatchResult {
@@ -28,6 +30,8 @@ struct BatchResult {
   std::string error;                // one line when it failed
   double wall_ms = 0;
   double cpu_ms = -1;               // the figure's own CPU time, when it ran on one thread
+  // How the still figure was rasterized, when a PNG or EXR was written (output.hpp).
+  std::optional<render::RasterReport> raster_report;
 };
 
 // Loads, renders and writes every spec. Figures render in parallel, one per worker: a

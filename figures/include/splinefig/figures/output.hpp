@@ -32,6 +32,9 @@ struct FigureFileOptions {
   std::string software;  // "splinefig 1.2.3"
   std::string title;     // image description, SVG title, PDF title
   long long date = -1;   // PDF creation date (seconds since 1970), none when negative
+  // Filled in when the figure is rasterized (PNG, EXR): how each item was resolved (exactly,
+  // or bands of rows from its pieces within the scene's coverage tolerance).
+  render::RasterReport* report = nullptr;
 };
 
 // Writes `fig` to `path` as `format`. `raster` caches the rasterized scene between calls for
