@@ -9,10 +9,11 @@ RGBA in linear light with associated alpha. See docs/python.md.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import threading
-from typing import Any, Callable, Optional, Sequence, Union
+from typing import Any, Callable, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -23,7 +24,7 @@ __version__ = _core.version
 __all__ = [
     "Basis", "Kernel", "kernel", "kernel_derivative", "response", "fourier", "report",
     "evaluate", "sample_count", "arclength_points", "arclength", "interpolate",
-    "Scene", "render_spec", "render_figure", "figure_names", "specs_dir",
+    "Scene", "RasterReport", "RasterReportItem", "render_spec", "render_figure", "figure_names", "specs_dir",
     "resample", "image_buffer", "compare", "difference_image", "triptych", "read_image", "write_image",
     "Image",
 ]
@@ -444,6 +445,34 @@ def interpolate(points: Any, *, ends: str = "relaxed", start_velocity: Any = Non
 
 # ---- rendering -------------------------------------------------------------------------------
 
+@dataclasses.dataclass(frozen=True)
+class RasterReportItem:
+    """An item with bands resolved from its pieces: its index in drawing order (from 0), the
+    bands of rows it touches, and how many of them were resolved from its pieces."""
+    index: int
+    bands: int
+    piece_bands: int
+
+
+@dataclasses.dataclass(frozen=True)
+class RasterReport:
+    """How a render resolved the scene (Scene.raster_report): `items` lists only the items
+    with bands drawn from their pieces, within `tolerance`; the rest were swept exactly."""
+    tolerance: float
+    band_rows: int
+    items: Tuple[RasterReportItem, ...]
+
+    @property
+    def exact(self) -> bool:
+        """True when every band of every item was swept exactly."""
+        return not self.items
+
+
+def _raster_report(d: Dict[str, Any]) -> RasterReport:
+    return RasterReport(float(d["tolerance"]), int(d["band_rows"]),
+                        tuple(RasterReportItem(int(i["index"]), int(i["bands"]), int(i["piece_bands"])) for i in d["items"]))
+
+
 class Scene:
     """A drawing of width x height pixels ((0, 0) the top-left corner, y down), rasterized
     exactly (area coverage, or a spline pixel filter) into linear-light RGBA. Colours are
@@ -470,6 +499,7 @@ class Scene:
         # render() runs without the interpreter's lock: adding items meanwhile from another
         # thread waits for it instead of changing the display list under the rasterizer.
         self._lock = threading.Lock()
+        self._report: Optional[RasterReport] = None
 
     @property
     def width(self) -> int:
@@ -483,6 +513,13 @@ class Scene:
     def blend(self) -> str:
         """The blend space: "linear" or "srgb"."""
         return self._s.blend
+
+    @property
+    def raster_report(self) -> Optional["RasterReport"]:
+        """How the last render drew the picture (None before the first): the tolerance in
+        force and the items (numbered from 0 in drawing order) that had bands of rows resolved
+        from their pieces within it; every other band and item was swept exactly."""
+        return self._report
 
     @property
     def coverage_tolerance(self) -> float:
@@ -649,7 +686,9 @@ class Scene:
         sRGB-encoded values for blend="srgb")."""
         t = _int(threads, "threads", 0, 256)
         with self._lock:
-            return Image(self._s.render(t), self._s.blend)
+            im, report = self._s.render_reported(t)
+            self._report = _raster_report(report)
+            return Image(im, self._s.blend)
 
     def render_rgba8(self, *, threads: int = 0, clear: Sequence[int] = (255, 255, 255)) -> np.ndarray:
         """The picture as an (h, w, 4) uint8 array, sRGB with straight alpha (a PNG's or
@@ -659,7 +698,9 @@ class Scene:
         if len(cl) != 3:
             raise ValueError(f"clear: expected 3 channel values, got {len(cl)}")
         with self._lock:
-            return self._s.render_rgba8(t, cl)
+            im, report = self._s.render_rgba8_reported(t, cl)
+            self._report = _raster_report(report)
+            return im
 
     def save(self, path: _PathLike, *, threads: int = 0) -> None:
         """Renders and writes .png (8-bit sRGB) or .exr (float linear)."""

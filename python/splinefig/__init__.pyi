@@ -83,6 +83,20 @@ def interpolate(points: _Points, *, ends: Literal["relaxed", "clamped", "periodi
                 start_velocity: Optional[npt.ArrayLike] = ..., end_velocity: Optional[npt.ArrayLike] = ...,
                 output: Literal["curve", "bspline", "bezier"] = ..., grain: int = ...) -> npt.NDArray[np.float64]: ...
 
+class RasterReportItem:
+    index: int
+    bands: int
+    piece_bands: int
+    def __init__(self, index: int, bands: int, piece_bands: int) -> None: ...
+
+class RasterReport:
+    tolerance: float
+    band_rows: int
+    items: Tuple[RasterReportItem, ...]
+    def __init__(self, tolerance: float, band_rows: int, items: Tuple[RasterReportItem, ...]) -> None: ...
+    @property
+    def exact(self) -> bool: ...
+
 class Scene:
     def __init__(self, width: int, height: int, *, background: _Color = ..., filter: _KernelLike = ...,
                  blend: Literal["linear", "srgb"] = ..., coverage_tolerance: float = ...) -> None: ...
@@ -92,6 +106,8 @@ class Scene:
     def height(self) -> int: ...
     @property
     def blend(self) -> str: ...
+    @property
+    def raster_report(self) -> Optional[RasterReport]: ...
     @property
     def coverage_tolerance(self) -> float: ...
     def fill_path(self, vertices: _Points, codes: Optional[npt.ArrayLike] = ..., *, color: _Color = ...,

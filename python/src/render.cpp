@@ -153,6 +153,23 @@ py::array rgba8_of(const Image& im, std::array<std::uint8_t, 3> clear) {
   return array_owning<std::uint8_t>(std::move(out), {im.height, im.width, 4});
 }
 
+// A RasterReport as {"tolerance", "band_rows", "items": [{"index", "bands", "piece_bands"}]}.
+py::dict report_dict(const render::RasterReport& r) {
+  py::list items;
+  for (const render::RasterReport::Item& it : r.items) {
+    py::dict d;
+    d["index"] = it.index;
+    d["bands"] = it.bands;
+    d["piece_bands"] = it.piece_bands;
+    items.append(d);
+  }
+  py::dict d;
+  d["tolerance"] = r.tolerance;
+  d["band_rows"] = r.band_rows;
+  d["items"] = items;
+  return d;
+}
+
 py::array figure_array(const figures::FigureSpec& spec, double scale, int threads) {
   figures::RenderOptions o;
   o.scale = scale;
@@ -377,6 +394,25 @@ void bind_render(py::module_& m) {
           im = render::rasterize(s, threads);
         }
         return rgba8_of(im, clear);
+      })
+      // The same two, with how the picture was rasterized (render::RasterReport) as a dict.
+      .def("render_reported", [](const render::Scene& s, int threads) {
+        Image im;
+        render::RasterReport r;
+        {
+          py::gil_scoped_release unlocked;
+          im = render::rasterize(s, threads, &r);
+        }
+        return py::make_tuple(array_from_image(std::move(im)), report_dict(r));
+      })
+      .def("render_rgba8_reported", [](const render::Scene& s, int threads, const std::array<std::uint8_t, 3>& clear) {
+        Image im;
+        render::RasterReport r;
+        {
+          py::gil_scoped_release unlocked;
+          im = render::rasterize(s, threads, &r);
+        }
+        return py::make_tuple(rgba8_of(im, clear), report_dict(r));
       });
   // An sRGB-encoded associated-alpha RGBA array (what rasterize gives in sRGB blend space) as
   // linear light, associated (what Scene::image takes), by the library's curve.
