@@ -8,8 +8,8 @@
 //   B:      one open polyline of 1,000,000 points (a 3:4 Lissajous), width 1.5, round joins.
 //   C:      10,000 random walks of 100 points, width 2, miter joins (limit 4).
 //   R:      one random self-crossing polyline, width 1, butt caps, miter joins: points uniform
-//           on the canvas (R1k, R10k, R30k, R100k: 10^3 to 10^5 points; the crossings grow as
-//           n^2), or a random walk with normal steps (sigma 8) reflected into the canvas (Rw100k,
+//           on the canvas (R1k, R10k, R30k, R100k, R1M: 10^3 to 10^6 points; the crossings grow
+//           as n^2), or a random walk with normal steps (sigma 8) reflected into the canvas (Rw100k,
 //           Rw1M: 10^5 and 10^6 points).
 // After the runs it prints the ratio table: splinefig's one-thread CPU time against Cairo's,
 // AGG's and Blend2D's, and its wall-time speed-up on all threads, each marked where it misses
@@ -17,6 +17,8 @@
 // accuracy/<set>/<impl> renders random strokes (set "random") or seeded walks of hairpins,
 // near-reversals and sub-width segments (set "walks") and reports the coverage error against the
 // exact union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
+// accuracy/dense/<workload> does the same for the dense workloads at the default coverage
+// tolerance, in two windows of each, and says how many bands were drawn from the pieces.
 // memory/<workload>/<impl> reports the peak memory drawing adds to a process (counter
 // added_MB, measured in a forked child, bench/peak_memory.hpp) and what its input takes
 // (input_MB); splinefig on one thread and on all threads, copying the points into its scene,
@@ -54,6 +56,7 @@
 #include <map>
 #include <random>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 namespace sr = splinefig::render;
@@ -160,6 +163,7 @@ Workload make_workload(char id) {
     case 'v': return uniform_polyline(10000);
     case 'x': return uniform_polyline(30000);
     case 'y': return uniform_polyline(100000);
+    case 'z': return uniform_polyline(1000000);
     case 'w': return walk_polyline(100000);
     case 'W': return walk_polyline(1000000);
     default: return walks();
@@ -175,7 +179,8 @@ const Workload& workload(char id) {
 
 // ---- splinefig -------------------------------------------------------------------------
 splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
-                         sr::Color ink = {0, 0, 0, 1}, double tolerance = sr::kDefaultCoverageTolerance) {
+                         sr::Color ink = {0, 0, 0, 1}, double tolerance = sr::kDefaultCoverageTolerance,
+                         sr::RasterReport* report = nullptr) {
   sr::Scene s(size, size, bg);
   s.set_max_crossings(INFINITY);  // R30k crosses about 4e8 times, past the default work limit
   s.set_coverage_tolerance(tolerance);
@@ -185,7 +190,7 @@ splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize
   st.cap = w.cap;
   st.miter_limit = 4;
   for (const Path& p : w.paths) s.stroke_polyline(p.pts, false, st, ink);
-  return sr::rasterize(s, threads);
+  return sr::rasterize(s, threads, report);
 }
 
 // The same, handing the points over to the scene (the rvalue overload) instead of copying them.
@@ -492,11 +497,71 @@ void BM_accuracy(benchmark::State& state, int impl, bool walks) {
   state.counters["mean_err"] = count ? sum / static_cast<double>(count) : 0;
 }
 
+// ---- dense workloads against the exact union oracle, in windows --------------------------
+// The dense workloads drawn at the default coverage tolerance (one thread, black on white, so
+// coverage is 1 - red in linear light), compared in two windows of `win`^2 pixels with the union
+// oracle of the pieces meeting each window (the oracle's cost grows with the square of the pieces
+// per pixel: R1M gets 3^2 windows). Counters: max_err, mean_err (over the windows' pixels),
+// piece_bands and bands (RasterReport: how many bands were resolved from the pieces), tolerance.
+void BM_dense_accuracy(benchmark::State& state, char id, int win) {
+  const Workload& w = workload(id);
+  double max_err = 0, sum = 0;
+  std::size_t count = 0;
+  sr::RasterReport report;
+  for (auto _ : state) {
+    const splinefig::Image img = draw_splinefig(w, 1, kSize, {1, 1, 1, 1}, {0, 0, 0, 1}, sr::kDefaultCoverageTolerance, &report);
+    // Each path is its own item, composited over the others: a pixel's coverage is
+    // 1 - prod(1 - c_i) over the paths' own union coverages c_i.
+    std::vector<std::vector<oracle::Poly>> pieces;
+    for (const Path& path : w.paths) {
+      std::vector<oracle::P2> op;
+      for (auto q : path.pts) op.push_back({q.x, q.y});
+      pieces.push_back(oracle::stroke_pieces(op, false, w.width, static_cast<oracle::Join>(static_cast<int>(w.join)), 4,
+                                             static_cast<oracle::Cap>(static_cast<int>(w.cap))));
+    }
+    max_err = 0, sum = 0, count = 0;
+    for (auto [x0, y0] : {std::pair{kSize * 3 / 10, kSize * 3 / 10}, std::pair{kSize * 6 / 10, kSize / 2 + 7}}) {
+      std::vector<double> clear(static_cast<std::size_t>(win * win), 1.0);  // prod(1 - c_i)
+      for (const std::vector<oracle::Poly>& path : pieces) {
+        std::vector<oracle::Poly> local;
+        for (const oracle::Poly& poly : path) {
+          double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
+          for (auto q : poly) bx0 = std::min(bx0, q.x), by0 = std::min(by0, q.y), bx1 = std::max(bx1, q.x), by1 = std::max(by1, q.y);
+          if (bx1 <= x0 || bx0 >= x0 + win || by1 <= y0 || by0 >= y0 + win) continue;
+          oracle::Poly moved;
+          for (auto q : poly) moved.push_back({q.x - x0, q.y - y0});
+          local.push_back(std::move(moved));
+        }
+        if (local.empty()) continue;
+        const std::vector<double> c = oracle::union_coverage(local, win, win);
+        for (std::size_t k = 0; k < c.size(); ++k) clear[k] *= 1 - c[k];
+      }
+      std::vector<double> want(clear.size());
+      for (std::size_t k = 0; k < want.size(); ++k) want[k] = 1 - clear[k];
+      for (int y = 0; y < win; ++y)
+        for (int x = 0; x < win; ++x) {
+          const double got = 1.0 - img.pixels[(static_cast<std::size_t>(y0 + y) * kSize + static_cast<std::size_t>(x0 + x)) * 4];
+          const double d = std::abs(got - want[static_cast<std::size_t>(y * win + x)]);
+          max_err = std::max(max_err, d);
+          sum += d;
+          ++count;
+        }
+    }
+  }
+  int bands = 0, piece_bands = 0;
+  for (const auto& it : report.items) bands += it.bands, piece_bands += it.piece_bands;
+  state.counters["max_err"] = max_err;
+  state.counters["mean_err"] = count ? sum / static_cast<double>(count) : 0;
+  state.counters["piece_bands"] = piece_bands;
+  state.counters["bands"] = bands;
+  state.counters["tolerance"] = report.tolerance;
+}
+
 void register_all() {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const double tol = sr::kDefaultCoverageTolerance;
   for (auto [id, name] : {std::pair{'1', "A1"}, {'3', "A3"}, {'B', "B"}, {'C', "C"}, {'u', "R1k"}, {'v', "R10k"},
-                          {'x', "R30k"}, {'y', "R100k"}, {'w', "Rw100k"}, {'W', "Rw1M"}}) {
+                          {'x', "R30k"}, {'y', "R100k"}, {'z', "R1M"}, {'w', "Rw100k"}, {'W', "Rw1M"}}) {
     std::string base = std::string("stroke/") + name + "/";
     benchmark::RegisterBenchmark((base + "splinefig").c_str(), BM_splinefig, id, 1, tol)->Unit(benchmark::kMillisecond);
     // The exact sweep of the outline only (coverage tolerance 0), where the default resolves
@@ -516,6 +581,11 @@ void register_all() {
     benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_memory, id, 1, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_memory, id, 2, 1)->Iterations(1)->Unit(benchmark::kMillisecond);
   }
+  for (auto [id, name, win] : {std::tuple{'C', "C", 16}, {'v', "R10k", 16}, {'x', "R30k", 16}, {'y', "R100k", 12},
+                               {'z', "R1M", 3}, {'w', "Rw100k", 16}, {'W', "Rw1M", 16}})
+    benchmark::RegisterBenchmark((std::string("accuracy/dense/") + name).c_str(), BM_dense_accuracy, id, win)
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
   for (auto [walks, set] : {std::pair{false, "random"}, {true, "walks"}})
     for (auto [impl, name] : {std::pair{0, "splinefig"}, {1, "cairo"}, {2, "agg"}, {3, "blend2d"}})
       benchmark::RegisterBenchmark((std::string("accuracy/") + set + "/" + name).c_str(), BM_accuracy, impl, walks)
