@@ -735,7 +735,8 @@ def figure_names() -> list:
 def render_spec(spec: Any, *, scale: float = 1.0, threads: int = 0, text: Optional[str] = None) -> np.ndarray:
     """Renders a TOML figure spec file (docs/spec.md), or the spec given as `text` (then `spec`
     is its name in messages): an (h, w, 4) float32 array, linear light, as `splinefig render`
-    draws it."""
+    draws it (blended as the spec's [canvas] blend says, sRGB by default; the linear decode of
+    that, the values of its EXR)."""
     s = _real(scale, "scale")
     if s <= 0:
         raise ValueError(f"scale: {s} is not positive")

@@ -177,7 +177,9 @@ py::array figure_array(const figures::FigureSpec& spec, double scale, int thread
   Image im;
   {
     py::gil_scoped_release unlocked;
-    im = figures::render_figure(spec, o).image;
+    // In linear light whatever the blend space: the decode of what was composited (sRGB by
+    // default), the values the figure's EXR holds.
+    im = to_linear(figures::render_figure(spec, o).image);
   }
   return array_from_image(std::move(im));
 }

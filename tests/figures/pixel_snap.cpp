@@ -31,6 +31,7 @@ const double kAxis = srgb_to_linear(0x33 / 255.0);
 TEST_CASE("a 1-px tick at a fractional position is one pixel column at full ink") {
   const FigureSpec spec = parse_spec(kSpec, "snap.toml");
   const RenderedFigure fig = render_figure(spec);
+  const Image im = to_linear(fig.image);
   const AxesInfo& ax = fig.info.axes.at(0);
   REQUIRE(ax.pixel_box[0] == 50);
   REQUIRE(ax.pixel_box[2] == 351);
@@ -43,25 +44,26 @@ TEST_CASE("a 1-px tick at a fractional position is one pixel column at full ink"
     const int col = static_cast<int>(std::floor(at));
     INFO("tick at x = " << at << ", column " << col);
     for (int y = 222; y <= 224; ++y) {
-      CHECK(fig.image.at(col, y, 0) == Approx(kAxis).margin(2e-3));
-      CHECK(fig.image.at(col - 1, y, 0) == Approx(1).margin(2e-3));
-      CHECK(fig.image.at(col + 1, y, 0) == Approx(1).margin(2e-3));
+      CHECK(im.at(col, y, 0) == Approx(kAxis).margin(2e-3));
+      CHECK(im.at(col - 1, y, 0) == Approx(1).margin(2e-3));
+      CHECK(im.at(col + 1, y, 0) == Approx(1).margin(2e-3));
     }
   }
   // The left spine: the column left of the box, full ink, from the box's top row.
-  for (int y = 20; y < 220; y += 37) CHECK(fig.image.at(49, y, 0) == Approx(kAxis).margin(2e-3));
+  for (int y = 20; y < 220; y += 37) CHECK(im.at(49, y, 0) == Approx(kAxis).margin(2e-3));
 }
 
 TEST_CASE("at 2x a tick is two whole pixel columns at full ink") {
   const RenderedFigure fig = render_figure(parse_spec(kSpec, "snap.toml"), {2, 1});
+  const Image im = to_linear(fig.image);
   const double at1 = 2 * (50 + 301.0 / 3);  // 300.667: its 2-px line on columns 300 and 301
   const int left = static_cast<int>(std::round(at1)) - 1;
   for (int y = 444; y <= 448; ++y) {
     INFO("row " << y);
-    CHECK(fig.image.at(left, y, 0) == Approx(kAxis).margin(2e-3));
-    CHECK(fig.image.at(left + 1, y, 0) == Approx(kAxis).margin(2e-3));
-    CHECK(fig.image.at(left - 1, y, 0) == Approx(1).margin(2e-3));
-    CHECK(fig.image.at(left + 2, y, 0) == Approx(1).margin(2e-3));
+    CHECK(im.at(left, y, 0) == Approx(kAxis).margin(2e-3));
+    CHECK(im.at(left + 1, y, 0) == Approx(kAxis).margin(2e-3));
+    CHECK(im.at(left - 1, y, 0) == Approx(1).margin(2e-3));
+    CHECK(im.at(left + 2, y, 0) == Approx(1).margin(2e-3));
   }
 }
 

@@ -161,7 +161,7 @@ Canvas parse_canvas(TableReader& r) {
       r.fail("filter", e.what());
     }
   }
-  c.blend = r.choice("blend", {"linear", "srgb"}, 0) == 0 ? render::BlendSpace::linear : render::BlendSpace::srgb;
+  c.blend = r.choice("blend", {"srgb", "linear"}, 0) == 0 ? render::BlendSpace::srgb : render::BlendSpace::linear;
   c.coverage_tolerance = r.non_negative("coverage_tolerance", c.coverage_tolerance);
   if (c.coverage_tolerance > 1) r.fail("coverage_tolerance", "must be in [0, 1] (a fraction of full coverage; 0: exact)");
   r.finish();

@@ -69,10 +69,11 @@ struct Canvas {
   // The pixel filter: box, tent or a basis spec, read as the kernel and checked as the renderer
   // checks one (render::validate_pixel_filter).
   Kernel filter = Kernel::box();
-  // How coverage and translucent colours blend: in linear light (exact coverage as light), or in
-  // sRGB-encoded values, as SVG and PDF viewers and browsers blend (the PNG then looks like the
-  // figure's SVG and PDF).
-  render::BlendSpace blend = render::BlendSpace::linear;
+  // How coverage and translucent colours blend: in sRGB-encoded values (the default), as SVG and
+  // PDF viewers and browsers blend, so that the PNG looks like the figure's SVG and PDF; or in
+  // linear light (exact coverage as light), for physical work. The raster comes out in the
+  // blend space's encoding; an EXR holds its linear decode (image/srgb.hpp to_linear).
+  render::BlendSpace blend = render::BlendSpace::srgb;
   // The coverage error accepted in a pixel where a dense stroke is drawn from its pieces, in
   // [0, 1]; 0 asks for the exact sweep everywhere (render::Scene::set_coverage_tolerance).
   double coverage_tolerance = render::kDefaultCoverageTolerance;
