@@ -17,6 +17,7 @@
 #include FT_BBOX_H
 #include <hb.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -137,6 +138,7 @@ std::string code_name(char32_t c) {
 struct ShapedGlyph {
   std::uint32_t id;
   double advance, dx, dy;  // font units, y up
+  std::uint32_t cluster;   // HarfBuzz's cluster: the byte of the run where the glyph's characters start
 };
 
 struct Face {
@@ -262,7 +264,7 @@ class Fonts {
     out->reserve(n);
     for (unsigned i = 0; i < n; ++i)
       out->push_back({info[i].codepoint, static_cast<double>(pos[i].x_advance), static_cast<double>(pos[i].x_offset),
-                      static_cast<double>(pos[i].y_offset)});
+                      static_cast<double>(pos[i].y_offset), info[i].cluster});
     hb_buffer_destroy(buf);
     if (f.shaped.size() > 20000) f.shaped.clear();  // a bound for programs that set endless strings
     f.shaped[key] = out;
@@ -366,6 +368,7 @@ TextLayout layout_text(std::string_view text, const TextStyle& style) {
     for (const ShapedGlyph& g : *shaped) {
       const GlyphOutline& o = fonts.outline(f, g.id);
       const double x = pen + s * g.dx, y = -s * g.dy;
+      lay.clusters.push_back({b0 + g.cluster, pen, s * g.advance});
       if (!o.empty) {
         lay.glyphs.push_back({&o, g.id, &f, x, y, s});
         lay.ascent = std::max(lay.ascent, s * o.ymax - y);
@@ -397,15 +400,22 @@ void turn(double deg, double& c, double& s) {
   c = std::cos(a);
   s = std::sin(a);
 }
-}  // namespace
 
-void append_outlines(const TextLayout& lay, Vec2 anchor, const TextStyle& style, Path& out) {
-  double ox = 0, oy = 0;  // the pen origin in the text frame, relative to the anchor
+// The pen origin in the text frame, relative to the anchor, as the alignment puts it.
+Vec2 aligned_origin(const TextLayout& lay, const TextStyle& style) {
+  double ox = 0, oy = 0;
   if (style.halign == HAlign::Center) ox = -0.5 * lay.width;
   else if (style.halign == HAlign::Right) ox = -lay.width;
   if (style.valign == VAlign::Top) oy = lay.ascent;
   else if (style.valign == VAlign::Bottom) oy = -lay.descent;
   else if (style.valign == VAlign::Middle) oy = 0.5 * (lay.ascent - lay.descent);
+  return {ox, oy};
+}
+}  // namespace
+
+void append_outlines(const TextLayout& lay, Vec2 anchor, const TextStyle& style, Path& out) {
+  const Vec2 o = aligned_origin(lay, style);
+  const double ox = o.x, oy = o.y;
   double c, sn;
   turn(style.angle, c, sn);
   for (const PlacedGlyph& g : lay.glyphs) {
@@ -438,6 +448,44 @@ Path text_path(std::string_view text, Vec2 anchor, const TextStyle& style) {
   Path out;
   detail::append_outlines(detail::layout_text(text, style), anchor, style, out);
   return out;
+}
+
+TextPlacement text_placement(std::string_view text, Vec2 anchor, const TextStyle& style) {
+  const detail::TextLayout lay = detail::layout_text(text, style);
+  TextPlacement p;
+  p.width = lay.width;
+  p.ascent = lay.ascent;
+  p.descent = lay.descent;
+  const Vec2 o = detail::aligned_origin(lay, style);
+  double c, sn;
+  detail::turn(style.angle, c, sn);
+  p.origin = {anchor.x + c * o.x + sn * o.y, anchor.y - sn * o.x + c * o.y};
+  // Each cluster (the glyphs sharing HarfBuzz's cluster byte): its leftmost pen position and the
+  // sum of its advances. Clusters by their first byte, so a character finds its own as the last
+  // one starting at or before it.
+  std::map<std::size_t, std::pair<double, double>> clusters;  // byte -> (x, advance)
+  for (const detail::GlyphCluster& g : lay.clusters) {
+    auto [it, fresh] = clusters.try_emplace(g.byte, g.x, g.advance);
+    if (!fresh) {
+      it->second.first = std::min(it->second.first, g.x);
+      it->second.second += g.advance;
+    }
+  }
+  const std::vector<detail::CodePoint> cps = detail::decode_utf8(text);
+  p.chars.reserve(cps.size());
+  for (std::size_t i = 0; i < cps.size();) {
+    // The characters i..j-1 of one cluster.
+    auto it = clusters.upper_bound(cps[i].byte);
+    const std::size_t end = it == clusters.end() ? text.size() : it->first;
+    const auto [x, advance] = it == clusters.begin() ? std::pair<double, double>{0, 0} : std::prev(it)->second;
+    std::size_t j = i + 1;
+    while (j < cps.size() && cps[j].byte < end) ++j;
+    const double share = advance / static_cast<double>(j - i);
+    for (std::size_t k = i; k < j; ++k)
+      p.chars.push_back({cps[k].c, cps[k].byte, cps[k].len, x + share * static_cast<double>(k - i), share});
+    i = j;
+  }
+  return p;
 }
 
 TextExtent measure_text(std::string_view text, const TextStyle& style) {

@@ -25,8 +25,16 @@ struct PlacedGlyph {
   double scale;               // pixels per font unit
 };
 
+// A shaped glyph's place in the string: the byte where its cluster starts (HarfBuzz's cluster,
+// in bytes of the whole text), its pen position and advance along the baseline, in pixels.
+struct GlyphCluster {
+  std::size_t byte;
+  double x, advance;
+};
+
 struct TextLayout {
-  std::vector<PlacedGlyph> glyphs;
+  std::vector<PlacedGlyph> glyphs;     // the inked glyphs
+  std::vector<GlyphCluster> clusters;  // every shaped glyph, inked or not, in visual order
   double width = 0, ascent = 0, descent = 0;  // advance and ink extent, pixels
 };
 

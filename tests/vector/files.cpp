@@ -23,7 +23,7 @@ struct PathCounts {
   int cubics = 0, lines = 0;
 };
 
-// The stroked paths of an SVG that are not text (text paths carry aria-label), in order.
+// The stroked paths of an SVG (text outlines are filled), in order.
 std::vector<PathCounts> stroked_paths(const std::string& svg) {
   std::vector<PathCounts> out;
   const std::regex path("<path d=\"([^\"]*)\" fill=\"none\"");
@@ -159,11 +159,13 @@ color = "#2ca02c"
   }
 }
 
-TEST_CASE("SVG keeps each label's string next to its outline") {
+TEST_CASE("SVG draws each label as its outlines, the string in a transparent <text> over them") {
   const std::string svg = svg_of("cbasis");
   CHECK(svg.find("<title>cbasis: ") == std::string::npos);  // the file title is the caller's
-  CHECK(svg.find("aria-label=\"Cardinal spline basis function") != std::string::npos);
-  CHECK(svg.find("<text") == std::string::npos);  // outlines: no fonts needed
+  // The outlines are hidden from screen readers, which read the <text> (tests/vector/text_layer.cpp).
+  CHECK(svg.find("<path aria-hidden=\"true\" d=\"") != std::string::npos);
+  CHECK(svg.find("<text fill-opacity=\"0\"") != std::string::npos);
+  CHECK(svg.find(">Cardinal spline basis function (Catmull-Rom, </tspan>") != std::string::npos);
 }
 
 TEST_CASE("dpi: PNG pHYs, EXR resolution, PDF page and SVG size follow one rule") {

@@ -2,11 +2,13 @@
 // width * 72 / dpi points.
 #include "raster.hpp"
 
+#include <splinefig/renderer/text_outlines.hpp>
 #include <splinefig/vector/vector.hpp>
 
 #include <cairo-pdf.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <ctime>
 #include <exception>
@@ -19,13 +21,79 @@ namespace {
 
 using render::Vec2;
 
+const cairo_user_data_key_t kLayerFaceKey{};
+
 // How far inside its rectangle an image is placed, in output pixels (PdfWriter::image).
 constexpr double kImageInset = 0.01;
+
+// The invisible text layer: a Cairo user font (PDF Type 3) per face whose glyphs are the code
+// points, each with the advance of its character in that DejaVu face and a declared ink box
+// (so that Cairo writes the text at all) but no drawing. The string lands in the page's content
+// stream, with a ToUnicode map from the clusters, and paints nothing.
+struct LayerFace {
+  render::TextStyle style;  // the face (family, weight, slant) at size 1: advances in ems
+};
+
+cairo_status_t empty_glyph(cairo_scaled_font_t* font, unsigned long glyph, cairo_t*, cairo_text_extents_t* extents) {
+  try {
+    const auto* face = static_cast<const LayerFace*>(
+        cairo_font_face_get_user_data(cairo_scaled_font_get_font_face(font), &kLayerFaceKey));
+    std::string ch;
+    const auto c = static_cast<char32_t>(glyph);
+    if (c < 0x80) ch += static_cast<char>(c);
+    else if (c < 0x800) ch += {static_cast<char>(0xC0 | (c >> 6)), static_cast<char>(0x80 | (c & 0x3F))};
+    else if (c < 0x10000)
+      ch += {static_cast<char>(0xE0 | (c >> 12)), static_cast<char>(0x80 | ((c >> 6) & 0x3F)), static_cast<char>(0x80 | (c & 0x3F))};
+    else
+      ch += {static_cast<char>(0xF0 | (c >> 18)), static_cast<char>(0x80 | ((c >> 12) & 0x3F)),
+             static_cast<char>(0x80 | ((c >> 6) & 0x3F)), static_cast<char>(0x80 | (c & 0x3F))};
+    const double advance = render::measure_text(ch, face->style).width;
+    // DejaVu's ascent and descent (0.928 and 0.236 em, rounded out): the box a viewer selects,
+    // in the layer's mirrored font space (y up, see PdfWriter::text_layer).
+    extents->x_bearing = 0;
+    extents->y_bearing = -0.24;
+    extents->width = advance > 0 ? advance : 0.001;
+    extents->height = 1.17;
+    extents->x_advance = advance;
+    extents->y_advance = 0;
+    return CAIRO_STATUS_SUCCESS;
+  } catch (...) {
+    return CAIRO_STATUS_USER_FONT_ERROR;
+  }
+}
+
+// The user font faces of one document, by face.
+class LayerFonts {
+ public:
+  ~LayerFonts() {
+    for (cairo_font_face_t* f : faces_)
+      if (f) cairo_font_face_destroy(f);
+  }
+  cairo_font_face_t* face(const render::TextStyle& style) {
+    const std::size_t k = static_cast<std::size_t>(style.family) * 4 + (style.weight == render::FontWeight::Bold ? 2 : 0) +
+                          (style.italic ? 1 : 0);
+    if (!faces_[k]) {
+      cairo_font_face_t* f = cairo_user_font_face_create();
+      auto* data = new LayerFace{style};
+      data->style.size = 1;
+      data->style.halign = render::HAlign::Left;
+      data->style.valign = render::VAlign::Baseline;
+      data->style.angle = 0;
+      cairo_font_face_set_user_data(f, &kLayerFaceKey, data, [](void* p) { delete static_cast<LayerFace*>(p); });
+      cairo_user_font_face_set_render_glyph_func(f, empty_glyph);
+      faces_[k] = f;
+    }
+    return faces_[k];
+  }
+
+ private:
+  std::array<cairo_font_face_t*, 12> faces_{};
+};
 
 // The items drawn one by one on the page (std::visit); an item that draws nothing is skipped.
 class PdfWriter {
  public:
-  explicit PdfWriter(cairo_t* cr) : cr_(cr) {}
+  PdfWriter(cairo_t* cr, LayerFonts& fonts) : cr_(cr), fonts_(fonts) {}
 
   void operator()(const render::StrokeItem& it) {
     if (it.points.empty() || !(it.style.width > 0) || it.color.a <= 0) return;
@@ -54,7 +122,11 @@ class PdfWriter {
     if (!(it.size > 0)) return;
     fill_polygon({render::marker_polygon(it.shape, it.centre, it.size)}, render::FillRule::NonZero, it.color);
   }
-  void operator()(const render::TextItem& it) { fill_path(*it.outline, render::FillRule::NonZero, it.style.color); }
+  void operator()(const render::TextItem& it) {
+    if (it.outline->empty() || it.style.color.a <= 0) return;
+    fill_path(*it.outline, render::FillRule::NonZero, it.style.color);
+    text_layer(it);
+  }
   void operator()(const render::ImageItem& it) {
     const Image& im = *it.image;
     const Vec2 p0 = it.p0, p1 = it.p1;
@@ -82,6 +154,36 @@ class PdfWriter {
 
  private:
   cairo_t* cr_;
+  LayerFonts& fonts_;
+
+  // The string over its outlines: each character at its pen position on the turned baseline,
+  // one cluster per character, in the layer's font at the item's size.
+  void text_layer(const render::TextItem& it) {
+    const render::TextPlacement pl = render::text_placement(it.text, it.anchor, it.style);
+    if (pl.chars.empty()) return;
+    std::vector<cairo_glyph_t> glyphs;
+    std::vector<cairo_text_cluster_t> clusters;
+    for (const render::PlacedChar& c : pl.chars) {
+      glyphs.push_back({c.code, c.x, 0});
+      clusters.push_back({static_cast<int>(c.bytes), 1});
+    }
+    cairo_save(cr_);
+    cairo_translate(cr_, pl.origin.x, pl.origin.y);
+    cairo_rotate(cr_, -it.style.angle * std::numbers::pi / 180);
+    cairo_set_font_face(cr_, fonts_.face(it.style));
+    // The font space mirrored (y up): Cairo writes a Type 3 font's glyph space y down, and
+    // poppler, which takes a glyph's up from the font's y axis, would read turned text the
+    // wrong way round (a label turned 90 degrees as ")s(k" for "k(s)"). The glyphs draw
+    // nothing, so the mirror shows nowhere.
+    cairo_matrix_t m;
+    cairo_matrix_init_scale(&m, it.style.size, -it.style.size);
+    cairo_set_font_matrix(cr_, &m);
+    cairo_set_source_rgb(cr_, 0, 0, 0);
+    cairo_show_text_glyphs(cr_, it.text.data(), static_cast<int>(it.text.size()), glyphs.data(),
+                           static_cast<int>(glyphs.size()), clusters.data(), static_cast<int>(clusters.size()),
+                           static_cast<cairo_text_cluster_flags_t>(0));
+    cairo_restore(cr_);
+  }
 
   void fill_polygon(const std::vector<std::vector<Vec2>>& contours, render::FillRule rule, render::Color c) {
     if (c.a <= 0) return;
@@ -172,8 +274,9 @@ std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& o) 
     return CAIRO_STATUS_SUCCESS;
   };
   cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(write, &bytes, scene.width() * k, scene.height() * k);
-  // The creation date is the given one or the epoch, never the clock: same scene, same bytes.
-  const std::string date = pdf_date(o.date >= 0 ? o.date : 0);
+  // The creation date is the given one, or none (Cairo leaves an empty one out), never the clock:
+  // same scene, same bytes. 0 (SOURCE_DATE_EPOCH=0) is no date either, not 1970.
+  const std::string date = o.date > 0 ? pdf_date(o.date) : std::string();
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
   if (!o.title.empty()) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, o.title.c_str());
   if (!o.creator.empty()) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, o.creator.c_str());
@@ -188,8 +291,9 @@ std::vector<unsigned char> to_pdf(const render::Scene& scene, const Options& o) 
   // An item the writer refuses (a clipped one: render::DrawError) ends the document first, then
   // leaves as itself, with its own type and kind.
   std::exception_ptr refused;
+  LayerFonts fonts;  // after the context and surface are gone, which hold references to its faces
   try {
-    PdfWriter w(cr);
+    PdfWriter w(cr, fonts);
     for (const render::DrawItem& item : detail::unclipped_items(scene)) std::visit(w, item);
   } catch (...) {
     refused = std::current_exception();

@@ -2,9 +2,12 @@
 // definitions that the picture does not need (docs/vector.md says why not Cairo's SVG surface).
 #include "raster.hpp"
 
+#include <splinefig/renderer/text_outlines.hpp>
 #include <splinefig/vector/vector.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <string>
 #include <variant>
@@ -88,14 +91,23 @@ class SvgWriter {
     if (!(it.size > 0)) return;
     fill_polygon({render::marker_polygon(it.shape, it.centre, it.size)}, render::FillRule::NonZero, it.color);
   }
+  // The glyph outlines (what is seen, hidden from screen readers), and the string in an
+  // invisible <text> laid over them (what is searched, selected and read aloud).
   void operator()(const render::TextItem& it) {
     if (it.outline->empty() || it.style.color.a <= 0) return;
-    const std::string label = xml_escape(it.text);
-    out += "<path aria-label=\"" + label + "\" d=\"";
+    out += "<path aria-hidden=\"true\" d=\"";
     path(*it.outline);
     out += "\"";
     fill_attributes(render::FillRule::NonZero, it.style.color);
-    out += "><title>" + label + "</title></path>\n";
+    out += "/>\n";
+    text_layer(it);
+  }
+  // The invisible text still open, written before any other item and at the end.
+  void flush() {
+    if (text_.empty()) return;
+    out += text_;
+    out += "</text>\n";
+    text_.clear();
   }
   void operator()(const render::ImageItem& it) {
     // The image's own pixels, mapped onto the rectangle (p0 is the image's top-left corner).
@@ -154,6 +166,63 @@ class SvgWriter {
       }
     }
   }
+  // The open <text>: its angle and where its last run ends, in its frame (the canvas turned
+  // by -angle about the origin, so that the baseline runs along x).
+  std::string text_;
+  double text_angle_ = 0;
+  Vec2 text_end_;
+
+  // One run of a label: a <tspan> at the run's pen origin, in the run's face and size, as wide as
+  // its outlines (textLength), fully transparent. A run that starts where the previous one ended
+  // (the rich-text runs of one label: a subscript, an italic letter) continues its <text>, so a
+  // label is one string to search and read.
+  void text_layer(const render::TextItem& it) {
+    const render::TextPlacement pl = render::text_placement(it.text, it.anchor, it.style);
+    if (pl.chars.empty()) return;
+    const double a = it.style.angle * std::numbers::pi / 180;
+    const double c = std::cos(a), sn = std::sin(a);
+    // Canvas (x, y) = (c u + sn v, -sn u + c v) for frame (u, v): SVG's rotate(-angle).
+    const Vec2 f{c * pl.origin.x - sn * pl.origin.y, sn * pl.origin.x + c * pl.origin.y};
+    const double tol = 1e-6 * std::max(1.0, it.style.size);
+    if (text_.empty() || it.style.angle != text_angle_ || std::abs(f.x - text_end_.x) > tol) {
+      flush();
+      text_.assign("<text fill-opacity=\"0\" xml:space=\"preserve\"");
+      if (it.style.angle != 0) {
+        text_ += " transform=\"rotate(";
+        std::swap(text_, out);
+        num(out, -it.style.angle);
+        std::swap(text_, out);
+        text_ += ")\"";
+      }
+      text_ += ">";
+      text_angle_ = it.style.angle;
+    }
+    text_end_ = {f.x + pl.width, f.y};
+    std::swap(text_, out);
+    out += "<tspan x=\"";
+    num(out, f.x);
+    out += "\" y=\"";
+    num(out, f.y);
+    out += "\" font-family=\"";
+    out += it.style.family == render::FontFamily::Serif  ? "DejaVu Serif, serif"
+           : it.style.family == render::FontFamily::Mono ? "DejaVu Sans Mono, monospace"
+                                                         : "DejaVu Sans, sans-serif";
+    out += "\" font-size=\"";
+    num(out, it.style.size);
+    out += "\"";
+    if (it.style.weight == render::FontWeight::Bold) out += " font-weight=\"bold\"";
+    if (it.style.italic) out += " font-style=\"italic\"";
+    if (pl.width > 0) {
+      out += " textLength=\"";
+      num(out, pl.width);
+      out += "\" lengthAdjust=\"spacingAndGlyphs\"";
+    }
+    out += '>';
+    out += xml_escape(it.text);
+    out += "</tspan>";
+    std::swap(text_, out);
+  }
+
   void circle(Vec2 c, double r) {
     out += "<circle cx=\"";
     num(out, c.x);
@@ -231,7 +300,11 @@ std::string to_svg(const render::Scene& scene, const Options& o) {
     out += "/>\n";
   }
   SvgWriter sw;
-  for (const render::DrawItem& item : detail::unclipped_items(scene)) std::visit(sw, item);
+  for (const render::DrawItem& item : detail::unclipped_items(scene)) {
+    if (!std::holds_alternative<render::TextItem>(item)) sw.flush();
+    std::visit(sw, item);
+  }
+  sw.flush();
   out += sw.out;
   out += "</svg>\n";
   return out;

@@ -24,6 +24,25 @@ namespace splinefig::render {
 // std::runtime_error if the style's own font file is not installed.
 Path text_path(std::string_view text, Vec2 anchor, const TextStyle& style);
 
+// Where text_path puts each character, for writers that lay the string itself over the
+// outlines (SVG's and PDF's invisible text layer, which makes labels searchable and
+// selectable): the pen origin, the start of the baseline after alignment and turning, and each
+// character's (code point's) place along the turned baseline. A character's place is its
+// HarfBuzz cluster's pen position and advance; the characters of one cluster (a ligature, a
+// base and its marks) share it in equal parts. Throws as text_path does.
+struct PlacedChar {
+  char32_t code;            // the code point
+  std::size_t byte, bytes;  // where it is in the text (UTF-8)
+  double x, advance;        // pen offset from the origin along the baseline, and advance (pixels)
+};
+struct TextPlacement {
+  Vec2 origin;                           // canvas pixels
+  double width = 0;                      // the shaped advance (measure_text's width)
+  double ascent = 0, descent = 0;        // measure_text's ink extent
+  std::vector<PlacedChar> chars;         // in the text's order
+};
+TextPlacement text_placement(std::string_view text, Vec2 anchor, const TextStyle& style);
+
 // The DejaVu file name of a style's face, e.g. "DejaVuSerif-BoldItalic.ttf".
 std::string font_file_name(FontFamily family, FontWeight weight, bool italic);
 

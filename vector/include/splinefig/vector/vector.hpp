@@ -30,8 +30,8 @@ struct Options {
   double dpi = 0;
   std::string title;    // SVG <title>, PDF Title
   std::string creator;  // PDF Creator ("splinefig 1.2.3")
-  // PDF CreationDate as seconds since 1970 (SOURCE_DATE_EPOCH), or none when negative: the same
-  // scene gives the same bytes.
+  // PDF CreationDate as seconds since 1970 (SOURCE_DATE_EPOCH), or none when 0 or negative (never
+  // the clock, never 1970): the same scene gives the same bytes.
   long long date = -1;
 };
 
