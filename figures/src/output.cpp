@@ -1,6 +1,8 @@
 // A figure's files: rasterized once for PNG and EXR, written as vectors for SVG and PDF.
 #include <splinefig/figures/output.hpp>
 
+#include "text/rich_text.hpp"
+
 #include <splinefig/image/io.hpp>
 #include <splinefig/vector/vector.hpp>
 
@@ -71,7 +73,10 @@ std::string figure_svg(const FigureScene& fig, const FigureFileOptions& o) {
   return vector::to_svg(fig.scene, vector_options(o));
 }
 
-std::string file_title(const FigureSpec& spec) { return spec.title.empty() ? spec.name : spec.name + ": " + spec.title; }
+// Plain text: the title's markup resolved ("$a$ = 0.5" is "a = 0.5"), as index.json has it.
+std::string file_title(const FigureSpec& spec) {
+  return spec.title.empty() ? spec.name : spec.name + ": " + detail::plain_text(spec.title);
+}
 
 void write_figure_file(const FigureScene& fig, const std::string& path, Format format, const FigureFileOptions& o,
                        std::optional<Image>& raster) {

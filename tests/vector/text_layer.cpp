@@ -1,7 +1,7 @@
 // The text of SVG and PDF files: each label's glyph outlines are what is seen, and an invisible
 // text layer over them is what a reader searches, selects and hears. Read back by tools that
 // are not splinefig: poppler (pdftotext, pdfinfo, pdftoppm), librsvg (rsvg-convert) and
-// Python's xml.etree. No PDF is dated 1970.
+// Python's xml.etree. The file titles are plain text, and no PDF is dated 1970.
 #include "figures/support.hpp"
 #include "skip.hpp"
 
@@ -197,6 +197,25 @@ TEST_CASE("the text layer adds no ink: librsvg and poppler draw the same pixels 
     CHECK(differing(a, b) == 0);
   }
   if (!ran) splinefig::testing_support::skip("neither rsvg-convert nor pdftoppm is installed");
+}
+
+TEST_CASE("file titles are plain text: the PNG description, SVG <title> and PDF Title") {
+  const auto dir = figtest::scratch("text-layer-titles");
+  const std::string spec = std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/cbasis.toml";
+  for (const char* ext : {"png", "svg", "pdf"}) {
+    const auto r = figtest::run(figtest::exe() + " render " + spec + " -o " + (dir / (std::string("c.") + ext)).string());
+    INFO(r.out);
+    REQUIRE(r.code == 0);
+  }
+  const std::string want = "cbasis: " + kTitle;
+  auto in = OIIO::ImageInput::open((dir / "c.png").string());
+  REQUIRE(in);
+  CHECK(in->spec().get_string_attribute("ImageDescription") == want);
+  CHECK(figtest::read_file(dir / "c.svg").find("<title>" + want + "</title>") != std::string::npos);
+  if (!have("pdfinfo")) return splinefig::testing_support::skip("pdfinfo is not installed (the PDF Title is unchecked)");
+  const auto r = figtest::run("pdfinfo " + (dir / "c.pdf").string());
+  INFO(r.out);
+  CHECK(r.out.find("Title:           " + want + "\n") != std::string::npos);
 }
 
 TEST_CASE("a PDF without SOURCE_DATE_EPOCH, or with 0, has no creation date, never 1970") {
