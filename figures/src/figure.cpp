@@ -91,8 +91,10 @@ AxesInfo draw_panel(PreparedAxes& prepared, const AxesSpec& spec, const Rect& ce
   draw_elements(prepared, panel, p, occ, info.series, entries, info.data_ink, g);
   const std::size_t end_op = p.ops().size();
   draw_over(ax, panel, p, g);
+  mark_inset_sources(ax, panel, occ);
   const std::optional<Rect> legend = draw_legend(ax, panel, entries, p, occ, g, require_free, crowded);
   if (crowded && *crowded) return info;
+  draw_insets(prepared, panel, p, occ, g, info.insets);
   auto add_box = [&](const std::string& what, const Rect& r) {
     info.text_boxes.push_back({what, {r.left * scale, r.top * scale, r.right * scale, r.bottom * scale}});
   };

@@ -211,6 +211,37 @@ ImageElement parse_image_element(TableReader& r, const ParseContext& ctx) {
   return im;
 }
 
+// [[axes.inset]]: the ranges it magnifies (inside what a log axis can show), and where it goes.
+InsetSpec parse_inset(TableReader& r, const AxesSpec& ax) {
+  InsetSpec in;
+  in.where = r.where();
+  for (const char name : {'x', 'y'}) {
+    const std::string key = std::string(1, name) + "_range";
+    if (!r.has(key)) r.fail(key, "an inset needs " + key + " = [lo, hi] (the data it magnifies)");
+    const std::vector<double> v = r.numbers(key);
+    if (v.size() != 2 || !(v[0] < v[1])) r.fail(key, "expected [lo, hi] with lo < hi");
+    if (const std::string why = range_problem(v[0], v[1]); !why.empty()) r.fail(key, why);
+    if ((name == 'x' ? ax.x : ax.y).scale == Scale::Log && !(v[0] > 0)) r.fail(key, "a log axis needs a positive range");
+    (name == 'x' ? in.x_range : in.y_range) = {v[0], v[1]};
+  }
+  if (r.has("at") && r.has("size")) r.fail("size", "give either at or size, not both");
+  if (r.has("at")) {
+    const std::vector<double> v = r.numbers("at");
+    if (v.size() != 4 || !(v[0] >= 0) || !(v[1] >= 0) || !(v[2] > 0) || !(v[3] > 0) || !(v[0] + v[2] <= 1) ||
+        !(v[1] + v[3] <= 1))
+      r.fail("at", "expected [x, y, width, height], fractions of the plot box from its lower left corner, the inset "
+                   "inside the box");
+    in.at = std::array<double, 4>{v[0], v[1], v[2], v[3]};
+  }
+  if (r.has("size")) {
+    const std::vector<double> v = r.numbers("size");
+    if (v.size() != 2 || !(v[0] > 0 && v[0] <= 1) || !(v[1] > 0 && v[1] <= 1))
+      r.fail("size", "expected [width, height], fractions of the plot box in (0, 1]");
+    in.size = {v[0], v[1]};
+  }
+  return in;
+}
+
 }  // namespace
 
 SeriesLook parse_series_look(TableReader& r, LookDefault defaults) {
@@ -290,6 +321,7 @@ AxesSpec parse_axes(TableReader& r, const ParseContext& ctx) {
   each("vline", [](TableReader& s) { return parse_rule(s, false); });
   each("image", [&](TableReader& s) { return parse_image_element(s, ctx); });
   parse_generated_elements(r, elements);  // docs/companion.md, docs/resample.md
+  r.each_table("inset", [&](TableReader& sub, const toml::table&) { ax.insets.push_back(parse_inset(sub, ax)); });
   r.finish();
   std::stable_sort(elements.begin(), elements.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (auto& [line, e] : elements) {

@@ -65,6 +65,13 @@ void draw_over(const AxesSpec& ax, const Panel& panel, Painter& p, const Guides&
 std::optional<Rect> draw_legend(const AxesSpec& ax, const Panel& panel, const std::vector<Entry>& entries, Painter& p,
                                 Occupancy& occ, const Guides& g, bool require_free = false, bool* crowded = nullptr);
 
+// Marks the rectangles the axes' insets magnify as used (before the legend is placed).
+void mark_inset_sources(const AxesSpec& ax, const Panel& panel, Occupancy& occ);
+// Draws the axes' insets ([[axes.inset]], plot_inset.cpp): each where it covers no data (or at
+// its `at`), the elements again at its ranges, its box, the rectangle it magnifies marked on
+// the panel and the connectors between them; reports each in `out`.
+void draw_insets(const PreparedAxes& prepared, const Panel& panel, Painter& p, Occupancy& occ, const Guides& g,
+                 std::vector<AxesInfo::Inset>& out);
 // Places text next to one of the candidate points (pixels, best first) where it covers the
 // least drawn data and stays inside `box`; marks the chosen spot as used and returns the
 // text's (left, baseline) anchor.

@@ -49,6 +49,14 @@ struct AxesInfo {
     double radius = 0;
   };
   std::vector<DataInk> data_ink;
+  // Each inset ([[axes.inset]]) as drawn (not written to index.json): its box and the
+  // rectangle it magnifies as marked on the panel, in output pixels (left, top, right, bottom,
+  // the exact places before the marks' lines are put on the pixel grid), and its ranges.
+  struct Inset {
+    std::array<double, 4> pixel_box{}, marked_box{};
+    std::array<double, 2> x_range{}, y_range{};
+  };
+  std::vector<Inset> insets;
 
   AxisMap x_map() const;  // data -> output pixels, as docs/conventions.md states
   AxisMap y_map() const;

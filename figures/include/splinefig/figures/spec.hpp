@@ -419,6 +419,18 @@ struct AxisSpec {
 // OutsideRight: right of the plot box, its top level with the box's; the box narrows to make room.
 enum class LegendPlace { Auto, None, UpperLeft, UpperRight, LowerLeft, LowerRight, UpperCenter, LowerCenter, OutsideRight };
 
+// A magnified view of a rectangle of its axes' data (docs/spec.md, [[axes.inset]]): a region
+// of the plot box drawing the axes' elements again at the inset's ranges, the rectangle marked
+// on the axes and joined to the inset by connector lines.
+struct InsetSpec {
+  std::array<double, 2> x_range{}, y_range{};  // lo < hi, in the axes' units
+  // [x, y, width, height]: the lower-left corner and the size, fractions of the plot box;
+  // none: placed where it covers no data, at `size`.
+  std::optional<std::array<double, 4>> at;
+  std::array<double, 2> size{0.4, 0.4};
+  SpecLocation where;  // of the [[axes.inset]] table
+};
+
 struct AxesSpec {
   AxisSpec x, y;
   std::string title;
@@ -437,6 +449,7 @@ struct AxesSpec {
   std::optional<std::array<int, 2>> cell;       // [row, col] in the figure's layout grid
   std::optional<std::array<double, 4>> box;     // explicit pixel box [left, top, right, bottom]
   std::vector<PlotElement> elements;
+  std::vector<InsetSpec> insets;
   SpecLocation where;  // of the [axes] header (no key), for messages
   // Of each element's table (parallel to `elements`), naming it in errors found while drawing;
   // may be shorter (then messages name the axes).
