@@ -145,10 +145,14 @@ void draw_insets(const PreparedAxes& prepared, const Panel& panel, Painter& p, O
     p.set_origin(in.where);
     const double l = b.left - 0.5, r = b.right + 0.5, t = b.top - 0.5, bo = b.bottom + 0.5;
     p.hairline({{l, t}, {r, t}, {r, bo}, {l, bo}}, true, thin(1), g.axis);
-    // The magnified rectangle on the panel, and the connectors from its corners to the inset's
-    // that run outside both.
-    p.hairline({{z.left, z.top}, {z.right, z.top}, {z.right, z.bottom}, {z.left, z.bottom}}, true, thin(1), g.axis);
-    const Vec2 zc[4] = {{z.left, z.top}, {z.right, z.top}, {z.right, z.bottom}, {z.left, z.bottom}};
+    // The magnified rectangle on the panel, its 1-px lines on pixel centres (where the raster's
+    // hairlines go, so that SVG and PDF draw it where the PNG does), and the connectors from its
+    // corners to the inset's that run outside both.
+    auto centre = [](double v) { return std::floor(v) + 0.5; };
+    const Rect zs{centre(z.left), centre(z.top), centre(z.right), centre(z.bottom)};
+    p.hairline({{zs.left, zs.top}, {zs.right, zs.top}, {zs.right, zs.bottom}, {zs.left, zs.bottom}}, true, thin(1),
+               g.axis);
+    const Vec2 zc[4] = {{zs.left, zs.top}, {zs.right, zs.top}, {zs.right, zs.bottom}, {zs.left, zs.bottom}};
     const Vec2 bc[4] = {{l, t}, {r, t}, {r, bo}, {l, bo}};
     for (int k = 0; k < 4; ++k) {
       if (crosses(zc[k], bc[k], z) || crosses(zc[k], bc[k], b)) continue;
