@@ -147,6 +147,7 @@ std::string index_json(const std::vector<FigureInfo>& figures) {
                   {"width", f.width},
                   {"height", f.height},
                   {"axes", std::move(axes)}};
+    if (f.pixel_exact) entry["pixel_exact"] = true;
     if (!f.animation.file.empty())
       entry["animation"] = {{"file", f.animation.file},
                             {"width", f.animation.width},
@@ -172,6 +173,7 @@ std::vector<FigureInfo> read_index_json(const std::string& text) {
       info.files = f.at("files").get<std::vector<std::string>>();
       info.width = f.at("width").get<int>();
       info.height = f.at("height").get<int>();
+      info.pixel_exact = f.value("pixel_exact", false);
       if (const auto a = f.find("animation"); a != f.end()) {  // a figure with [animation]
         info.animation.file = a->at("file").get<std::string>();
         info.animation.width = a->at("width").get<int>();
@@ -383,15 +385,51 @@ std::string file_url(std::string_view name) {
   return out;
 }
 
+constexpr int kWideCardPixels = 1000;
+
+// A card that takes a whole row of the two-column grid: a pixel-exact figure (wider than a
+// column at its pixel size) or one drawn wider than the usual 800 px.
+bool wide_card(const FigureInfo& f) { return f.pixel_exact || f.width >= kWideCardPixels; }
+
+// The cards of a section in the order the two-column grid fills without an empty cell between
+// cards: a wide card that comes while a row holds one card waits until the next card completes
+// that row; if none does, the row's lone card goes after the wide ones, to the section's end.
+std::vector<const FigureInfo*> packed(const std::vector<const FigureInfo*>& cards) {
+  std::vector<const FigureInfo*> out, held;
+  bool open = false;  // the current row holds one card
+  for (const FigureInfo* f : cards) {
+    if (wide_card(*f)) {
+      (open ? held : out).push_back(f);
+      continue;
+    }
+    out.push_back(f);
+    open = !open;
+    if (!open) {
+      out.insert(out.end(), held.begin(), held.end());
+      held.clear();
+    }
+  }
+  if (!held.empty()) {  // `open`: the last card of `out` is the row's lone card
+    const FigureInfo* lone = out.back();
+    out.back() = held.front();
+    out.insert(out.end(), held.begin() + 1, held.end());
+    out.push_back(lone);
+  }
+  return out;
+}
+
 void figure_html(std::ostringstream& o, const FigureInfo& f) {
   std::string png = file_with(f, ".png"), svg = file_with(f, ".svg");
   const std::string shown = png.empty() ? (svg.empty() ? (f.files.empty() ? "" : f.files.front()) : svg) : png;
-  const bool natural = f.caption.find("at 1:1") != std::string::npos;
+  // A pixel-exact figure is shown from its PNG, one image pixel to one CSS pixel.
+  const bool exact = f.pixel_exact && !png.empty();
   const std::string title = html_text(f.title.empty() ? f.name : f.title);
-  o << "<figure id=\"" << html_text(f.name) << "\"" << (natural ? " class=\"natural\"" : "") << ">\n  <div class=\"frame\"><a href=\""
-    << file_url(shown) << "\"><img src=\"" << file_url(shown) << "\"";
-  // The vector file is the sharp source on high-density screens; a 1:1 figure keeps its pixels.
-  if (!natural && !svg.empty() && !png.empty()) o << " srcset=\"" << file_url(png) << " 1x, " << file_url(svg) << " 2x\"";
+  std::string classes = exact ? "pixel-exact" : "";
+  if (wide_card(f)) classes += classes.empty() ? "wide" : " wide";
+  o << "<figure id=\"" << html_text(f.name) << "\"" << (classes.empty() ? "" : " class=\"" + classes + "\"")
+    << ">\n  <div class=\"frame\"><a href=\"" << file_url(shown) << "\"><img src=\"" << file_url(shown) << "\"";
+  // The vector file is the sharp source on high-density screens; a pixel-exact figure keeps its pixels.
+  if (!exact && !svg.empty() && !png.empty()) o << " srcset=\"" << file_url(png) << " 1x, " << file_url(svg) << " 2x\"";
   // The alt text describes the picture for a reader who cannot see it: its title and caption.
   const std::string alt = f.caption.empty() ? title : title + ": " + html_text(detail::plain_text(f.caption));
   o << " width=\"" << f.width << "\" height=\"" << f.height << "\" alt=\"" << alt << "\"></a></div>\n";
@@ -402,14 +440,18 @@ void figure_html(std::ostringstream& o, const FigureInfo& f) {
       << "\" alt=\"" << html_text(f.animation.alt) << "\"></a></div>\n";
   o << "  <figcaption><b>" << title << "</b>";
   if (!f.source.empty()) o << "<span class=\"source\">" << html_text(f.source) << "</span>";
-  o << " " << markup_html(f.caption) << "\n    <span class=\"files\">";
+  o << " " << markup_html(f.caption);
+  if (exact)
+    o << " <span class=\"exact\">Shown pixel for pixel (" << f.width << " &times; " << f.height
+      << "); on a narrow screen it scrolls sideways, or <a href=\"" << file_url(png) << "\">open the PNG</a>.</span>";
+  o << "\n    <span class=\"files\">";
   for (const auto& file : f.files) {
     const auto dot = file.find_last_of('.');
     std::string label = dot == std::string::npos ? file : file.substr(dot + 1);
     std::transform(label.begin(), label.end(), label.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
     o << "<a href=\"" << file_url(file) << "\">" << html_text(label) << "</a>";
   }
-  o << "<code>" << html_text(f.name) << "</code></span></figcaption>\n</figure>\n";
+  o << "</span></figcaption>\n</figure>\n";
 }
 
 }  // namespace
@@ -430,19 +472,26 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
   h1 { font-size: clamp(20px, 3vw, 28px); margin: 0 0 4px; }
   h2 { font-size: clamp(17px, 2.2vw, 22px); margin: 28px 0 12px; border-bottom: 1px solid #ccc; padding-bottom: 4px; }
   nav a { margin-right: 14px; color: #1f5f99; }
-  .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(min(100%, max(440px, 40%)), 1fr)); gap: clamp(10px, 2vw, 24px); }
+  /* One column on phones and narrow windows, two from 950 px; a wide card takes a whole row
+     (the generator orders the cards so that none leaves an empty cell before it). */
+  .grid { display: grid; grid-template-columns: minmax(0, 1fr); gap: clamp(10px, 2vw, 24px); }
+  @media (min-width: 950px) {
+    .grid { grid-template-columns: repeat(2, minmax(0, 1fr)); }
+    figure.wide { grid-column: 1 / -1; }
+  }
   figure { margin: 0; background: #fff; border: 1px solid #ddd; padding: clamp(6px, 1.5vw, 12px); min-width: 0; }
   figure img { width: 100%; height: auto; display: block; }
+  figure.wide img { width: auto; max-width: 100%; margin: 0 auto; }
   figure .animation { margin-top: 8px; }
-  figure.natural { grid-column: 1 / -1; }
-  figure.natural .frame { overflow-x: auto; }
-  figure.natural img { width: auto; max-width: none; image-rendering: pixelated; }
+  /* Pixel-exact: never resampled (one image pixel, one CSS pixel); scrolls sideways when wider. */
+  figure.pixel-exact .frame:first-child { overflow-x: auto; }
+  figure.pixel-exact .frame:first-child img { width: auto; max-width: none; image-rendering: pixelated; }
+  figcaption .exact { display: block; margin-top: 4px; font-size: 13px; color: #555; }
   figcaption { font-size: 14px; margin-top: 8px; overflow-wrap: anywhere; }
   figcaption b { display: block; margin-bottom: 2px; }
   figcaption .source { display: block; margin-bottom: 4px; font-size: 13px; color: #555; font-style: italic; }
   .files { display: block; margin-top: 6px; font-size: 12px; }
   .files a { margin-right: 10px; color: #1f5f99; }
-  .files code { color: #777; }
   footer { margin-top: 28px; font-size: 12px; color: #666; }
 </style>
 </head>
@@ -468,7 +517,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
   for (const Section& s : sections) {
     if (s.figures.empty()) continue;
     o << "<section id=\"" << s.id << "\">\n<h2>" << s.title << "</h2>\n<div class=\"grid\">\n";
-    for (const FigureInfo* f : s.figures) figure_html(o, *f);
+    for (const FigureInfo* f : packed(s.figures)) figure_html(o, *f);
     o << "</div>\n</section>\n";
   }
   o << "<footer>splinefig";
@@ -497,7 +546,7 @@ std::string gallery_html(const std::vector<FigureInfo>& figures, const GalleryOp
     var columns = 0;
     document.querySelectorAll(".grid").forEach(function (grid) {
       var lefts = {};
-      grid.querySelectorAll('figure:not(.natural)').forEach(function (f) { lefts[Math.round(f.getBoundingClientRect().left)] = 1; });
+      grid.querySelectorAll('figure:not(.wide)').forEach(function (f) { lefts[Math.round(f.getBoundingClientRect().left)] = 1; });
       columns = Math.max(columns, Object.keys(lefts).length);
     });
     document.body.setAttribute("data-columns", String(columns));

@@ -172,6 +172,7 @@ FigureInfo build(const FigureSpec& spec, double scale, Painter& p) {
   info.title = plain_text(spec.title);  // index.json and the gallery show it as plain text
   info.caption = caption_text(spec);  // its {=name} fields computed from the elements' data
   info.source = spec.source;
+  info.pixel_exact = spec.pixel_exact;
   info.width = static_cast<int>(std::round(spec.canvas.width * scale));
   info.height = static_cast<int>(std::round(spec.canvas.height * scale));
   const Guides g(spec.sizes);

@@ -23,6 +23,8 @@ TEST_CASE("bad specs name the file, the line and the key") {
   } cases[] = {
       {"[canvas]\nwidth = 100\ncolour = \"#fff\"\n", "bad.toml:3: canvas.colour: unknown key"},
       {"[canvas]\nwidth = \"wide\"\n", "bad.toml:2: canvas.width: expected an integer"},
+      {"[gallery]\npixel_exact = \"yes\"\n", "bad.toml:2: gallery.pixel_exact: expected"},
+      {"[gallery]\npixel = true\n", "bad.toml:2: gallery.pixel: unknown key"},
       {"[[polyline]]\npoints = [[0, 0], [1, 1]]\nwidth = -1\n", "bad.toml:3: polyline[0].width: must not be negative"},
       {"[[polyline]]\npoints = [[0, 0], [nan, 1]]\n", "bad.toml:2: polyline[0].points: expected a finite number, found nan"},
       {"[[polyline]]\npoints = [[0, 0], [1, 1]]\ncolor = \"red\"\n", "bad.toml:3: polyline[0].color: \"red\" is not a hex colour"},

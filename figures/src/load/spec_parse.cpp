@@ -464,6 +464,12 @@ FigureSpec read_spec(std::string_view text, const std::string& name, const std::
     TableReader l(*t[0], name, "layout");
     spec.layout = parse_layout(l);
   }
+  if (auto t = r.tables("gallery"); !t.empty()) {
+    if (t.size() > 1) r.fail("gallery", "only one [gallery] table");
+    TableReader g(*t[0], name, "gallery");
+    spec.pixel_exact = g.boolean("pixel_exact", false);
+    g.finish();
+  }
   std::vector<Placed> items;
   collect(r, "polyline", items, [](TableReader& s, const toml::table&) { return Item{parse_polyline(s)}; });
   collect(r, "polygon", items, [](TableReader& s, const toml::table&) { return Item{parse_polygon(s)}; });

@@ -74,6 +74,7 @@ struct FigureInfo {
   std::string name, title, caption;
   std::string source;  // the source figure it reproduces (the spec's `source`), plain text
   int width = 0, height = 0;  // output pixels
+  bool pixel_exact = false;   // the spec's [gallery] pixel_exact: shown at its pixel size
   std::vector<AxesInfo> axes;
   std::vector<std::string> files;  // filled in by whoever writes the files
   AnimationInfo animation;         // likewise

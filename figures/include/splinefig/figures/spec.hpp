@@ -499,6 +499,9 @@ struct FigureSpec {
   std::string source;   // the figure of the source texts it reproduces or illustrates, as a reader cites it
   std::vector<CaptionField> caption_fields;
   bool show_title = true;
+  // [gallery] pixel_exact: the figure's point is its pixels (aliasing, a zone plate), so the
+  // gallery shows it at its pixel size, never resampled by the browser.
+  bool pixel_exact = false;
   TextSizes sizes;  // pixels at 1x
   render::FontFamily font_family = render::FontFamily::Sans;  // of every text without its own
   SpecLocation title_origin;  // of title_size (or title, or canvas.print_width), for messages
