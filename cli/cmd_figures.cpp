@@ -167,7 +167,7 @@ const splinefig::cli::Registration reg{
       splinefig::cli::choices(app.add_option("--format", a->format, "Comma-separated: png, exr, svg, pdf")->type_name("NAME,...")->capture_default_str(),
                               {"png", "exr", "svg", "pdf"});
       app.add_option("--scale", a->scale, "Output pixels per spec pixel (2 for print)")->capture_default_str();
-      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the files (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
+      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the files (PNG pHYs, EXR, PDF page and SVG size; 0: from the spec's print_width, else none)")
           ->type_name("FLOAT")->capture_default_str();
       app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
       app.add_option("--coverage-tolerance", a->coverage_tolerance,

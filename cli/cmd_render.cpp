@@ -64,7 +64,7 @@ const splinefig::cli::Registration reg{
               ->type_name("NAME"),
           {"png", "exr", "svg", "pdf"});
       app.add_option("--scale", a->scale, "Output pixels per spec pixel")->capture_default_str();
-      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size; 0: none)")
+      app.add_option("--dpi", a->dpi, "Spec pixels per inch, written to the file (PNG pHYs, EXR, PDF page and SVG size; 0: from the spec's print_width, else none)")
           ->type_name("FLOAT")->capture_default_str();
       app.add_option("--threads", a->threads, "Rendering threads (0: all cores; at most 256)")->type_name("INT")->capture_default_str();
       app.add_option("--coverage-tolerance", a->coverage_tolerance,
@@ -145,7 +145,7 @@ const splinefig::cli::Registration reg{
           const fig::FigureScene f = fig::figure_scene(spec, a->scale);
           fig::FigureFileOptions w;
           w.scale = a->scale;
-          w.dpi = dpi;
+          w.dpi = dpi > 0 ? dpi : spec.canvas.print_dpi();  // else the spec's printed size
           w.threads = threads;
           w.software = std::string("splinefig ") + SPLINEFIG_VERSION;
           w.title = fig::file_title(spec);

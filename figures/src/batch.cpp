@@ -76,7 +76,7 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     FigureScene fig = figure_scene(spec, o.scale);
     FigureFileOptions w;
     w.scale = o.scale;
-    w.dpi = o.dpi;
+    w.dpi = o.dpi > 0 ? o.dpi : spec.canvas.print_dpi();  // else the spec's printed size
     w.threads = raster_threads;
     w.software = o.software;
     w.title = file_title(spec);

@@ -189,6 +189,7 @@ std::string figure_svg_text(const figures::FigureSpec& spec, double scale) {
   figures::check_scaled_canvas(spec, scale, "scale");
   figures::FigureFileOptions o;
   o.scale = scale;
+  o.dpi = spec.canvas.print_dpi();  // the printed size, as render without --dpi
   o.title = figures::file_title(spec);
   py::gil_scoped_release unlocked;
   return figures::figure_svg(figures::figure_scene(spec, scale), o);

@@ -132,8 +132,10 @@ TEST_CASE("print width: bad print widths and sizes are refused in one line namin
       {canvas("\"1e400in\""), "pw.toml:3: canvas.print_width: \"1e400in\" is out of range"},
       {canvas("\"2000in\""), "pw.toml:3: canvas.print_width: \"2000in\" is over the limit of 1000 in"},
       {canvas("true"), "pw.toml:3: canvas.print_width: must be a length: \"3.5in\""},
-      // 800 px across 0.01 in: a point is 1111 px, the default 10 pt title 11111 px.
-      {canvas("\"0.01in\""), "pw.toml:3: canvas.print_width: makes the default title_size 11111 px, over the limit of 4096 px"},
+      // 800 px across 900 in: under a pixel an inch, no file could record it.
+      {canvas("\"900in\""), "pw.toml:3: canvas.print_width: 800 px across 900 in is 0.888889 px per inch, outside [1, 10000]"},
+      // 800 px across 0.01 in: 80000 px an inch (a point 1111 px, the default title 11111 px).
+      {canvas("\"0.01in\""), "pw.toml:3: canvas.print_width: 800 px across 0.01 in is 80000 px per inch, outside [1, 10000]"},
       {"tick_size = 5000\n" + canvas("\"3.5in\""),
        "pw.toml:1: tick_size: font size 5000 pt is 15873 px at the print width, over the limit of 4096 px"},
       {"legend_size = -8\n" + canvas("\"3.5in\""), "pw.toml:1: legend_size: must be positive, found -8"},

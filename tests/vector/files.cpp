@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <fstream>
 #include <regex>
 
 namespace fig = splinefig::figures;
@@ -191,10 +192,29 @@ TEST_CASE("dpi: PNG pHYs, EXR resolution, PDF page and SVG size follow one rule"
   CHECK(pdf.find("/MediaBox [ 0 0 192 120 ]") != std::string::npos);
   const std::string svg = figtest::read_file(render("c.svg", "--dpi 300"));
   CHECK(svg.find("width=\"256\" height=\"160\" viewBox=\"0 0 800 500\"") != std::string::npos);
-  // Without --dpi: no pHYs, the CSS pixel for vector files (a 1x figure is 800 px, 600 pt).
-  CHECK(resolution(render("d.png", "")) == 0);
-  CHECK(figtest::read_file(render("d.pdf", "--scale 2")).find("/MediaBox [ 0 0 600 375 ]") != std::string::npos);
-  CHECK(figtest::read_file(render("d.svg", "--scale 2")).find("width=\"800\" height=\"500\" viewBox=\"0 0 1600 1000\"") !=
+  // Without --dpi, cbasis's print width, 6 in: 800 / 6 = 133.33 px per inch, a PDF page of
+  // 6 x 72 = 432 by 500 / 800 x 432 = 270 points, an SVG of 6 x 96 = 576 by 360 CSS px.
+  CHECK(resolution(render("p.png", "")) == Approx(800.0 / 6).epsilon(1e-4));
+  CHECK(resolution(render("p.png", "--scale 2")) == Approx(1600.0 / 6).epsilon(1e-4));
+  CHECK(figtest::read_file(render("p.pdf", "--scale 2")).find("/MediaBox [ 0 0 432 270 ]") != std::string::npos);
+  CHECK(figtest::read_file(render("p.svg", "")).find("width=\"576\" height=\"360\" viewBox=\"0 0 800 500\"") !=
+        std::string::npos);
+  // Neither --dpi nor a print width: no pHYs, the CSS pixel for vector files (a 1x figure is
+  // 800 px, 600 pt).
+  const std::string plain = (dir / "plain.toml").string();
+  {
+    std::ofstream out(plain);
+    out << "[canvas]\nwidth = 800\nheight = 500\n[[circle]]\ncenter = [400, 250]\nradius = 100\n";
+  }
+  auto render_plain = [&](const std::string& out, const std::string& flags) {
+    const auto r = figtest::run(figtest::exe() + " render " + plain + " -o " + (dir / out).string() + " " + flags);
+    INFO(r.out);
+    REQUIRE(r.code == 0);
+    return (dir / out).string();
+  };
+  CHECK(resolution(render_plain("d.png", "")) == 0);
+  CHECK(figtest::read_file(render_plain("d.pdf", "--scale 2")).find("/MediaBox [ 0 0 600 375 ]") != std::string::npos);
+  CHECK(figtest::read_file(render_plain("d.svg", "--scale 2")).find("width=\"800\" height=\"500\" viewBox=\"0 0 1600 1000\"") !=
         std::string::npos);
 }
 

@@ -149,7 +149,15 @@ Canvas parse_canvas(TableReader& r) {
   c.width = r.integer("width", c.width, 1, 1 << 30);
   c.height = r.integer("height", c.height, 1, 1 << 30);
   check_canvas(r, c);
-  if (r.has("print_width")) c.print_width = parse_print_width(r);
+  if (r.has("print_width")) {
+    c.print_width = parse_print_width(r);
+    if (const double dpi = c.print_dpi(); !(dpi >= kMinDpi && dpi <= kMaxDpi)) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "%d px across %g in is %g px per inch, outside [%g, %g]", c.width,
+                    c.print_width->inches, dpi, kMinDpi, kMaxDpi);
+      r.fail("print_width", buf);
+    }
+  }
   c.background = r.color("background", c.background);
   if (auto spec = r.opt_string("filter")) {
     c.filter = kernel_value(r, "filter", *spec);
@@ -364,13 +372,9 @@ TextSizes text_sizes(TableReader& r, const Canvas& canvas) {
       {"title_size", &s.title},   {"panel_title_size", &s.panel_title}, {"label_size", &s.label},
       {"tick_size", &s.tick},     {"legend_size", &s.legend},           {"inline_label_size", &s.inline_label},
       {"text_size", &s.text}};
-  for (const auto& [key, size] : keys) {
-    if (!r.has(key) && *size > kMaxFontSize)  // a default, made too large by a tiny print width
-      throw SpecFileError(canvas.print_width->origin, "makes the default " + std::string(key) + " " +
-                                                          std::to_string(static_cast<long long>(*size)) +
-                                                          " px, over the limit of 4096 px");
-    *size = r.font_size(key, *size);
-  }
+  // The defaults stay under kMaxFontSize: a print width gives at most kMaxDpi / 72 px a point
+  // (parse_canvas), 1389 px for the 10 pt title.
+  for (const auto& [key, size] : keys) *size = r.font_size(key, *size);
   return s;
 }
 

@@ -79,6 +79,9 @@ struct Canvas {
   double coverage_tolerance = render::kDefaultCoverageTolerance;
   // Pixels at 1x per printed point, width / (print width in inches x 72); 0 without a print width.
   double px_per_pt() const { return print_width ? width / (print_width->inches * 72) : 0; }
+  // Pixels at 1x per printed inch, width / print width, in [kMinDpi, kMaxDpi] (checked when
+  // read): the dpi a figure file records when none is asked for; 0 without a print width.
+  double print_dpi() const { return print_width ? width / print_width->inches : 0; }
 };
 
 // The font sizes of a figure's text roles, in pixels at 1x. A spec with a print width states
