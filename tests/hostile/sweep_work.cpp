@@ -69,7 +69,7 @@ TEST_CASE("under the default coverage tolerance a dense polyline is drawn, and t
     check_refused("bad", canvas + "coverage_tolerance = " + bad + "\n", "bad.toml:4: canvas.coverage_tolerance: ");
 }
 
-TEST_CASE("--coverage-tolerance replaces the spec's, is checked as a flag, and -v says how the picture was drawn") {
+TEST_CASE("render and figures: --coverage-tolerance replaces the spec's, is checked as a flag, and -v says how the picture was drawn") {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0, 256);
   std::string spec = "[canvas]\nwidth = 256\nheight = 256\n[[polyline]]\nwidth = 1\npoints = [[4, 4], [9, 6]]\n"
