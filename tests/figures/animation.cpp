@@ -84,7 +84,7 @@ std::string frame_spec(int i, const std::array<double, 2>& xr, const std::array<
            "\nstyle = \"line+markers\"\ncolor = \"#000000\"\nwidth = 1.5\n";
     } else {
       s += "[[axes.inbetween]]\n" + kLegFrames + "t = " + num(t) + "\nwidth = 1.5\n";
-      s += panel == 0 ? "color = \"#0072b2\"\n" : "interpolation = \"linear\"\ncolor = \"#d55e00\"\ndash = [5, 3]\n";
+      s += panel == 0 ? "color = \"#1f77b4\"\n" : "interpolation = \"linear\"\ncolor = \"#cc79a7\"\ndash = [5, 3]\n";
     }
   }
   return s;

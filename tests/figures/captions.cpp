@@ -166,8 +166,8 @@ TEST_CASE("s003-fig12's caption prints B3 of both curves, and S1 and S5 are labe
   const auto& after = element<RelaxedBsplineElement>(spec, 0, 2).points;
   REQUIRE(before.size() == 7);
   REQUIRE(after.size() == 7);
-  CHECK(contains(caption, "with B₃ at " + fmt(before[3], 0) + " (blue) and at " + fmt(after[3], 0) + " (red)"));
-  CHECK(contains(caption, "B₃ at (4, 1) (blue) and at (4, −1) (red)"));
+  CHECK(contains(caption, "with B₃ at " + fmt(before[3], 0) + " (blue) and at " + fmt(after[3], 0) + " (dark red"));
+  CHECK(contains(caption, "B₃ at (4, 1) (blue) and at (4, −1) (dark red, dashed)"));
   // Seed 003 §4: the joints are S_i = (B_(i-1) + 4B_i + B_(i+1))/6; S1 and S5 do not involve B3.
   const Vec2 S1 = (1.0 / 6) * (before[0] + 4 * before[1] + before[2]);
   const Vec2 S5 = (1.0 / 6) * (before[4] + 4 * before[5] + before[6]);
@@ -327,7 +327,7 @@ TEST_CASE("bias' caption prints where the curves start and stop and the polygon'
   // The memo's B-spline matrix, last row (1 4 1 0) / 6, with doubled ends K0 K0 K1 ...: the
   // curve starts at (K0 + 4 K0 + K1) / 6, a sixth of the way from K0 to K1, and ends a sixth of
   // the way from K6 back to K5.
-  CHECK(contains(caption, "the B-spline (short dashes) starts 1/6 of the way along the first leg and stops 1/6 of the "
+  CHECK(contains(caption, "the B-spline (blue, dashed) starts 1/6 of the way along the first leg and stops 1/6 of the "
                           "last leg short of the last knot"));
   // A polygon that is no longer symmetric cannot be captioned as one.
   FigureSpec moved = spec;

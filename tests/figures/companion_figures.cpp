@@ -112,11 +112,11 @@ TEST_CASE("companion figures show their documented checks") {
     };
     // Bias 2 at vertex (3,2) (top panel): the joint is (2b1^3 x2 + 4(b1^2 + b1) x3 + 2 x4)/d with
     // the memo's B_{2,0} (2b1^3 = 16, 4(b1^2 + b1) = 24, d = 42): (112/42, 48/42).
-    CHECK(on_panel(0, 112.0 / 42, 48.0 / 42, "#0072b2"));
+    CHECK(on_panel(0, 112.0 / 42, 48.0 / 42, "#303030"));
     // Tension 20 at the same vertex (bottom): B_{1,20} gives (2 x2 + 28 x3 + 2 x4)/32 = (3, 56/32).
-    CHECK(on_panel(1, 3, 56.0 / 32, "#0072b2"));
+    CHECK(on_panel(1, 3, 56.0 / 32, "#303030"));
     // Far from vertex 4 every curve is the B-spline: the joint at (5,2) is (5, 4/3), dark
-    // where the curves lie over the dashed B-spline.
+    // where the dashed B-spline, drawn last, lies over the curves.
     const AxesMap m = f.map(1);
     const Rgb p = f.png.at(static_cast<int>(m.px(5)), static_cast<int>(m.py(4.0 / 3)));
     CHECK(p.r + p.g + p.b < 3 * 200);

@@ -153,8 +153,8 @@ TEST_CASE("bias: the B-spline (b1 = 1) is visible where it starts, a sixth along
   // Doubled end knots: the first junction is (5 B_0 + B_1) / 6 = (1/6, 1/3) for b1 = 1, b2 = 0
   // (the memo's B-spline matrix), on the polygon's first leg, where the b1 = 5 curve runs too
   // (it starts at 0.005 of the leg). The dashed curve begins with a dash there.
-  const Rgb grey = series_color(axes, "$b_1$ = 1 (B-spline)");
-  CHECK(best_share(png, m.px(1.0 / 6), m.py(1.0 / 3), grey, 1) > 0.8);
+  const Rgb own = series_color(axes, "$b_1$ = 1 (B-spline)");
+  CHECK(best_share(png, m.px(1.0 / 6), m.py(1.0 / 3), own, 1) > 0.8);
 }
 
 TEST_CASE("multiplicity: the B-spline reaches a triple knot, Catmull-Rom passes every knot") {
@@ -163,19 +163,22 @@ TEST_CASE("multiplicity: the B-spline reaches a triple knot, Catmull-Rom passes 
   const Json& fig = figure(index, "multiplicity");
   Png png = load_png(dir / "multiplicity.png");
   REQUIRE(fig["axes"].size() == 6);  // B-spline row, Catmull-Rom row; multiplicity 1, 2, 3
-  const Rgb red = hex("#d62728"), blue = hex("#1f77b4");
+  // The B-spline in its blue dashes, Catmull-Rom in vermillion (docs/figures.md): where a dash
+  // gap falls on a point, the next dash is within 3 px of it along the curve.
+  const Rgb blue = hex("#0072b2"), vermillion = hex("#d55e00");
   AxesMap bs1(fig["axes"][0]), bs2(fig["axes"][1]), bs3(fig["axes"][2]), cr1(fig["axes"][3]);
-  CHECK(series_color(fig["axes"][0], "B-spline, multiplicity 1").r == red.r);
+  CHECK(series_color(fig["axes"][0], "B-spline, multiplicity 1").r == blue.r);
+  CHECK(series_color(fig["axes"][3], "Catmull-Rom, multiplicity 1").r == vermillion.r);
   // Multiplicity 1: the B-spline passes (P + 4 (2,0) + P') / 6 = (2, 2/3) above the knot.
-  CHECK(best_share(png, bs1.px(2), bs1.py(2.0 / 3), red, 0) > 0.5);
-  CHECK(best_share(png, bs1.px(2), bs1.py(0), red, 0) < 0.1);
+  CHECK(best_share(png, bs1.px(2), bs1.py(2.0 / 3), blue, 3) > 0.5);
+  CHECK(best_share(png, bs1.px(2), bs1.py(0), blue, 0) < 0.1);
   // Multiplicity 2: at the knot's copies the curve is at ((2,0) + 4 (2,0) + (1,2)) / 6 = (11/6, 1/3)
   // and symmetrically (13/6, 1/3).
-  CHECK(best_share(png, bs2.px(11.0 / 6), bs2.py(1.0 / 3), red, 0) > 0.5);
+  CHECK(best_share(png, bs2.px(11.0 / 6), bs2.py(1.0 / 3), blue, 3) > 0.5);
   // Multiplicity 3: the piece between the copies is the constant (2, 0): the curve reaches the knot.
-  CHECK(best_share(png, bs3.px(2), bs3.py(0), red, 0) > 0.5);
+  CHECK(best_share(png, bs3.px(2), bs3.py(0), blue, 3) > 0.5);
   // Catmull-Rom interpolates: it passes (1, 2), (2, 0) and (3, 2).
-  for (auto [x, y] : {std::pair{1.0, 2.0}, {2.0, 0.0}, {3.0, 2.0}}) CHECK(best_share(png, cr1.px(x), cr1.py(y), blue, 0) > 0.5);
+  for (auto [x, y] : {std::pair{1.0, 2.0}, {2.0, 0.0}, {3.0, 2.0}}) CHECK(best_share(png, cr1.px(x), cr1.py(y), vermillion, 0) > 0.5);
 }
 
 TEST_CASE("ends: doubled Catmull-Rom reaches the end knots, open Catmull-Rom starts at the second") {
@@ -184,12 +187,12 @@ TEST_CASE("ends: doubled Catmull-Rom reaches the end knots, open Catmull-Rom sta
   const Json& fig = figure(index, "ends");
   Png png = load_png(dir / "ends.png");
   REQUIRE(fig["axes"].size() == 6);
-  const Rgb blue = hex("#1f77b4");
+  const Rgb vermillion = hex("#d55e00");  // Catmull-Rom's colour (docs/figures.md)
   AxesMap open(fig["axes"][0]), dbl(fig["axes"][1]);
-  CHECK(best_share(png, dbl.px(0), dbl.py(0), blue, 0) > 0.5);
-  CHECK(best_share(png, dbl.px(7), dbl.py(3), blue, 0) > 0.5);
-  CHECK(best_share(png, open.px(1), open.py(2), blue, 0) > 0.5);
-  CHECK(best_share(png, open.px(0), open.py(0), blue, 0) < 0.1);  // the first knot only steers
+  CHECK(best_share(png, dbl.px(0), dbl.py(0), vermillion, 0) > 0.5);
+  CHECK(best_share(png, dbl.px(7), dbl.py(3), vermillion, 0) > 0.5);
+  CHECK(best_share(png, open.px(1), open.py(2), vermillion, 0) > 0.5);
+  CHECK(best_share(png, open.px(0), open.py(0), vermillion, 0) < 0.1);  // the first knot only steers
   // The panels do not overlap and sit inside the image.
   for (size_t i = 0; i < 6; ++i) {
     AxesMap a(fig["axes"][i]);
