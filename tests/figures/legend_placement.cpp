@@ -126,6 +126,37 @@ TEST_CASE("no legend of a built-in figure covers its data") {
   CHECK(legends >= 12);  // not vacuous: the figures with legends
 }
 
+TEST_CASE("the direct labels of bbasis-a, s003-fig16 and bias cover no data and no other label") {
+  // These figures label each curve next to it instead of in a legend the reader matches by colour.
+  for (const char* name : {"bbasis-a", "s003-fig16", "bias"}) {
+    const FigureInfo info =
+        layout_figure(load_spec(std::string(SPLINEFIG_SOURCE_DIR) + "/figures/specs/" + name + ".toml"));
+    REQUIRE(info.axes.size() == 1);
+    const AxesInfo& ax = info.axes[0];
+    std::vector<std::array<double, 4>> labels;
+    for (const TextBox& t : ax.text_boxes) {
+      CHECK(t.what != "legend");
+      if (t.what == "text") labels.push_back(t.box);
+    }
+    CHECK(labels.size() == ax.series.size());  // one per labelled series
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      const auto& r = labels[i];
+      for (std::size_t k = 0; k < ax.data_ink.size(); ++k) {
+        const auto& ink = ax.data_ink[k];
+        const double d = to_polyline(ink.points, r);
+        INFO(name << ": label " << i << " [" << r[0] << ", " << r[1] << ", " << r[2] << ", " << r[3] << "] and data polyline "
+                  << k << " (half width " << ink.radius << ") at " << d << " px");
+        CHECK(d > ink.radius);
+      }
+      for (std::size_t j = i + 1; j < labels.size(); ++j) {
+        const auto& q = labels[j];
+        INFO(name << ": labels " << i << " and " << j);
+        CHECK((r[2] <= q[0] || q[2] <= r[0] || r[3] <= q[1] || q[3] <= r[1]));
+      }
+    }
+  }
+}
+
 TEST_CASE("a legend asked for the upper right, where the data is, goes where it is not") {
   for (const std::string place : {"upper right", "auto"}) {
     INFO(place);

@@ -31,6 +31,7 @@ RenderedFigure bias_curve_alone(const std::string& basis) {
         c->color = Color{0, 0, 0, 1};
         c->stroke.dashes = {};  // b1 > 1 is dashed with butt caps in the figure
         c->stroke.cap = render::Cap::Round;
+        c->label = {};  // its label, set beside the curve's end in the figure, is no mirror image
         kept.push_back(*c);
       }
     REQUIRE(kept.size() == 1);
