@@ -240,6 +240,16 @@ void prepare_item(const DrawItem& item, const ClipRegion* clip_path, const Compo
   }
 }
 
+bool prepare_streamed(const DrawItem& item, const Compositor& comp, const Box& clip, Geometry& g, Prepared& out,
+                      int canvas_h, OutlineStream& stream) {
+  const auto* it = std::get_if<StrokeItem>(&item);
+  if (!it || !stream.start(it->points, it->closed, it->style, clip, g, out.shape)) return false;
+  out.paint = comp.paint(it->color);
+  out.row0 = std::max(0, static_cast<int>(std::floor(stream.ymin())));
+  out.row1 = std::min(canvas_h, static_cast<int>(std::ceil(stream.ymax())));
+  return true;
+}
+
 }  // namespace splinefig::render::detail
 
 namespace splinefig::render {

@@ -3,6 +3,7 @@
 // y-monotone chains (clipped to the region that can affect the canvas).
 #include "compositor.hpp"
 #include "clip_region.hpp"
+#include "outline_stream.hpp"
 #include "sweep.hpp"
 
 #include <cstdint>
@@ -26,5 +27,13 @@ struct Prepared {
 // up to `threads` threads (stroke.hpp: OutlinePieces); the result does not depend on `threads`.
 void prepare_item(const DrawItem& item, const ClipRegion* clip_path, const Compositor& comp, Vec2 shift, const Box& clip,
                   Geometry& g, Prepared& out, int canvas_h, int threads = 1);
+
+// For one thread drawing under the box filter: an item that is a long stroke (one whose outline
+// is built in pieces) is started with its outline left to `stream` (outline_stream.hpp), which
+// builds it as the item's bands come: its paint, an empty shape and the rows the outline can
+// reach, which may be more than prepare_item's (rows without ink are drawn as nothing). False,
+// with nothing done, for every other item. `clip` is the canvas.
+bool prepare_streamed(const DrawItem& item, const Compositor& comp, const Box& clip, Geometry& g, Prepared& out,
+                      int canvas_h, OutlineStream& stream);
 
 }  // namespace splinefig::render::detail

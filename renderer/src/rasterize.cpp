@@ -104,9 +104,11 @@ struct BandWork {
 // coverage is the same for any thread count. With `pieces`, a dense band (kPieceRatio, before
 // sweeping, or kStripRatio, while sweeping: then the band is cleared first) is drawn from the
 // pieces instead, and the sweep restarts below it: the verdict depends on the band alone, so
-// the bytes do not depend on the threads.
+// the bytes do not depend on the threads. With `stream`, the item's outline is built band by band
+// (outline_stream.hpp) into g and p's shape.
 BandWork render_box(const Geometry& g, const Prepared& p, const DrawItem& item, LazyPieces* pieces, Image& img,
-                    int r0, int r1, BoxBand& band, StripSweep& sweep, PieceCoverage::Scratch& ps, std::uint64_t budget) {
+                    int r0, int r1, BoxBand& band, StripSweep& sweep, PieceCoverage::Scratch& ps, std::uint64_t budget,
+                    OutlineStream* stream = nullptr) {
   BandWork out;
   std::uint64_t base = 0;  // work before the sweep's last restart
   auto restart = [&] {
@@ -118,6 +120,7 @@ BandWork render_box(const Geometry& g, const Prepared& p, const DrawItem& item, 
   for (int b0 = y_begin - y_begin % kBandRows; b0 < y_end; b0 += kBandRows) {
     const int b1 = std::min(b0 + kBandRows, img.height);
     band.begin(b0, b1 - b0);
+    if (stream) stream->advance(static_cast<double>(b0), static_cast<double>(b1));
     const BandPlan plan = pieces ? plan_band(g, p.shape, b0, b1, img.width) : BandPlan::Sweep;
     const bool dense = plan == BandPlan::Pieces;
     sweep.set_strip_ratio(plan == BandPlan::SweepOrPieces ? kStripRatio : 0);
@@ -172,7 +175,7 @@ BandWork render_box(const Geometry& g, const Prepared& p, const DrawItem& item, 
       }
       for (int x = xe + 1; x <= std::min(row.cmax + 1, img.width + 1); ++x) row.acc[static_cast<std::size_t>(x)] = 0;
     }
-    if (!more) break;
+    if (!more && !(stream && stream->pending())) break;
   }
   out.work = base + sweep.work();
   return out;
@@ -299,7 +302,10 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
       geom.verts.clear();
       geom.chains.clear();
       p = Prepared{};
-      prepare(i, p, geom, 1);
+      // A long stroke's outline is built as its bands come and given back behind them.
+      OutlineStream stream;
+      const bool streamed = box && eligible(i) && prepare_streamed(items[i], comp, clip, geom, p, H, stream);
+      if (!streamed) prepare(i, p, geom, 1);
       if (p.row1 <= p.row0) continue;
       if (!eligible(i))
         if (const double n = excess_crossings(geom, p, scene.max_crossings_)) refuse_work(items[i], i, n, scene.max_crossings_);
@@ -309,9 +315,13 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
       }
       if (box) {
         LazyPieces pieces;
-        const BandWork w =
-            render_box(geom, p, items[i], eligible(i) ? &pieces : nullptr, img, p.row0, p.row1, band, sweep, ps, budget);
+        const BandWork w = render_box(geom, p, items[i], eligible(i) ? &pieces : nullptr, img, p.row0, p.row1, band,
+                                      sweep, ps, budget, streamed ? &stream : nullptr);
         if (w.over) refuse_sweep(items[i], i, scene.max_crossings_);
+        if (streamed && w.piece_bands > 0) {  // the rows prepare_item gives, for the report
+          p.row0 = std::max(0, static_cast<int>(std::floor(stream.chains_ymin())));
+          p.row1 = std::min(H, static_cast<int>(std::ceil(stream.chains_ymax())));
+        }
         note_bands(i, p, w.piece_bands);
         continue;
       } else {

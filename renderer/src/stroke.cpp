@@ -315,6 +315,21 @@ void clip_segment(Vec2 a, Vec2 d, double len, const Box& box, double& t0, double
 
 }  // namespace
 
+bool OutlinePieces::y_range(std::size_t k, double& y0, double& y1) const {
+  const std::size_t a = k * kOutlinePiecePoints, b = std::min(a + kOutlinePiecePoints, p_.size() - 1);
+  const std::size_t first = a > 0 ? a - 1 : 0, last = std::min(b + 1, p_.size() - 1);  // as build() uses them
+  double lo = p_[first].y, hi = lo;
+  for (std::size_t i = first + 1; i <= last; ++i) {
+    if (p_[i] == p_[i - 1]) return false;
+    lo = std::min(lo, p_[i].y);
+    hi = std::max(hi, p_[i].y);
+  }
+  const double reach = stroke_reach(style_);
+  y0 = lo - reach;
+  y1 = hi + reach;
+  return true;
+}
+
 double visible_dash_count(std::span<const Vec2> pts, bool closed, const StrokeStyle& style, const Box& clip) {
   if (!(style.width > 0) || pts.size() < 2 || style.dashes.empty()) return 0;
   const double period = style.dashes.period();

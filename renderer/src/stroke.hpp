@@ -95,6 +95,10 @@ class OutlinePieces {
   std::size_t points() const { return p_.size(); }
   // Appends piece k to `out`; false, appending nothing, if its points repeat a point.
   bool build(std::size_t k, ChainBuilder& out) const;
+  // Heights [y0, y1] that piece k's outline stays within: the y range of the points build()
+  // uses, grown by the farthest any outline vertex lies from them (a miter tip at the limit, a
+  // square cap's corner). False if those points repeat a point (build() would refuse the piece).
+  bool y_range(std::size_t k, double& y0, double& y1) const;
   // Cuts the points without their repeats (then size() is 0 if too few are left).
   void drop_repeats();
 

@@ -6,7 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 namespace sr = splinefig::render;
@@ -140,5 +142,70 @@ TEST_CASE("long strokes: byte-identical for any thread count, under the box and 
       REQUIRE(img.pixels.size() == ref.pixels.size());
       CHECK(std::memcmp(img.pixels.data(), ref.pixels.data(), ref.pixels.size() * sizeof(float)) == 0);
     }
+  }
+}
+
+TEST_CASE("long strokes: one thread builds the outline band by band, with the bytes and report of the whole outline") {
+  // On one thread under the box filter and a coverage tolerance above 0, a long stroke's outline
+  // pieces are built as the bands reach them and their memory given back behind them
+  // (renderer/src/outline_stream.hpp); with 2 threads, or at tolerance 0, the whole outline is
+  // built first. A Lissajous curve of 7 x 9 loops (300,001 points, ten pieces) passes every
+  // row many times, so many pieces are built and dropped at each band; its joins are sharp
+  // enough at the ends of the loops for the miter tips and square caps to reach past the points.
+  std::vector<sr::Vec2> curve;
+  for (int k = 0; k <= 300000; ++k) {
+    const double t = 2 * 3.141592653589793 * k / 300000;
+    curve.push_back({100 + 96 * std::sin(7 * t + 0.3), 90 + 86 * std::sin(9 * t)});
+  }
+  // A dense walk (many crossings per chain): some of its bands are drawn from its pieces, so the
+  // report's bands count the rows of the streamed outline.
+  std::vector<sr::Vec2> walk{{100, 90}};
+  std::uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (int k = 0; k < 200000; ++k) {
+    h ^= h << 13;
+    h ^= h >> 7;
+    h ^= h << 17;
+    const double a = static_cast<double>(h >> 11) * 0x1p-53 * 2 * 3.141592653589793;
+    sr::Vec2 q{walk.back().x + 0.7 * std::cos(a), walk.back().y + 0.7 * std::sin(a)};
+    q.x = std::clamp(q.x, 70.0, 130.0);
+    q.y = std::clamp(q.y, 40.0, 150.0);
+    walk.push_back(q);
+  }
+  auto scene = [&](double tolerance, sr::Join join, sr::Cap cap, bool with_walk) {
+    sr::Scene s(200, 180, {1, 1, 1, 1});
+    s.set_coverage_tolerance(tolerance);
+    s.set_max_crossings(INFINITY);
+    s.fill_circle({40, 40}, 20, {0.9f, 0.7f, 0, 0.5f});
+    sr::StrokeStyle st;
+    st.width = 2.5;
+    st.join = join;
+    st.cap = cap;
+    st.miter_limit = 10;
+    s.stroke_polyline(curve, false, st, {0.1f, 0.2f, 0.7f, 0.8f});
+    st.width = 1;
+    if (with_walk) s.stroke_polyline(walk, false, st, {0.8f, 0.1f, 0.1f, 0.6f});
+    s.stroke_polyline({{10, 10}, {190, 170}, {20, 160}}, false, st, {0, 0, 0, 1});
+    return s;
+  };
+  for (const auto& [join, cap] : {std::pair{sr::Join::Miter, sr::Cap::Square}, {sr::Join::Round, sr::Cap::Round}}) {
+    INFO("join " << static_cast<int>(join) << " cap " << static_cast<int>(cap));
+    sr::RasterReport streamed, whole;
+    const auto one = sr::rasterize(scene(sr::kDefaultCoverageTolerance, join, cap, true), 1, &streamed);
+    const auto two = sr::rasterize(scene(sr::kDefaultCoverageTolerance, join, cap, true), 2, &whole);
+    REQUIRE(one.pixels.size() == two.pixels.size());
+    CHECK(std::memcmp(one.pixels.data(), two.pixels.data(), one.pixels.size() * sizeof(float)) == 0);
+    // Without the walk nothing is drawn from pieces: the same bytes as at tolerance 0, where the
+    // one thread builds the whole outline first.
+    const auto curve_only = sr::rasterize(scene(sr::kDefaultCoverageTolerance, join, cap, false), 1);
+    const auto exact = sr::rasterize(scene(0, join, cap, false), 1);
+    REQUIRE(curve_only.pixels.size() == exact.pixels.size());
+    CHECK(std::memcmp(curve_only.pixels.data(), exact.pixels.data(), exact.pixels.size() * sizeof(float)) == 0);
+    REQUIRE(whole.items.size() == 1);
+    CHECK(whole.items[0].index == 2);
+    CHECK(whole.items[0].piece_bands > 0);
+    REQUIRE(streamed.items.size() == 1);
+    CHECK(streamed.items[0].index == whole.items[0].index);
+    CHECK(streamed.items[0].bands == whole.items[0].bands);
+    CHECK(streamed.items[0].piece_bands == whole.items[0].piece_bands);
   }
 }
