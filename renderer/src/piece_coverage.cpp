@@ -44,7 +44,7 @@ constexpr int kGrid = 16;
 }  // namespace
 
 PieceCoverage::PieceCoverage(ConvexPieces pieces, int width, int height, int band_rows)
-    : pieces_(std::move(pieces)), width_(width), height_(height), band_rows_(band_rows) {
+    : pieces_(std::move(pieces)), width_(width) {
   const int bands = (height + band_rows - 1) / band_rows;
   band_start_.assign(static_cast<std::size_t>(bands) + 1, 0);
   auto band_range = [&](const Box& b, int& b0, int& b1) {

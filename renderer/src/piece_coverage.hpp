@@ -75,7 +75,7 @@ class PieceCoverage {
            std::uint64_t budget) const;
 
   ConvexPieces pieces_;
-  int width_, height_, band_rows_;
+  int width_;
   std::vector<std::size_t> band_start_;  // pieces of band b: by_band_[band_start_[b], band_start_[b + 1])
   std::vector<std::uint32_t> by_band_;
 };
