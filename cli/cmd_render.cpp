@@ -136,10 +136,11 @@ const splinefig::cli::Registration reg{
             if (!spec.animation)
               throw Failure("-o " + a->out + ": a .webp output is the spec's [animation], and " + spec_name + " has none");
             fig::check_animation_size(spec, a->scale);
-            fig::write_animation(spec, a->out, a->scale, threads);
+            std::vector<splinefig::render::RasterReport> frames;
+            fig::write_animation(spec, a->out, a->scale, threads, a->verbose ? &frames : nullptr);
             if (a->verbose)
-              std::fprintf(stderr, "splinefig render: %s: an animation (its frames' rasterization is not reported; render a frame's still to see it)\n",
-                           splinefig::cli::printable(spec_name).c_str());
+              for (const std::string& line : splinefig::cli::describe_frames(frames))
+                std::fprintf(stderr, "splinefig render: %s: %s\n", splinefig::cli::printable(spec_name).c_str(), line.c_str());
             return 0;
           }
           const fig::FigureScene f = fig::figure_scene(spec, a->scale);

@@ -36,4 +36,18 @@ std::string describe_raster(const render::RasterReport& r) {
          " pieces, within the coverage tolerance " + tol + " (the other bands and items exact)";
 }
 
+std::vector<std::string> describe_frames(const std::vector<render::RasterReport>& frames) {
+  std::vector<std::string> out;
+  const std::string of = " of " + std::to_string(frames.size()) + ": ";
+  for (std::size_t i = 0; i < frames.size();) {
+    const std::string what = describe_raster(frames[i]);
+    std::size_t j = i + 1;
+    while (j < frames.size() && describe_raster(frames[j]) == what) ++j;
+    out.push_back(j == i + 1 ? "frame " + std::to_string(i + 1) + of + what
+                             : "frames " + std::to_string(i + 1) + "-" + std::to_string(j) + of + what);
+    i = j;
+  }
+  return out;
+}
+
 }  // namespace splinefig::cli

@@ -5,6 +5,7 @@
 #include <splinefig/renderer/renderer.hpp>
 
 #include <string>
+#include <vector>
 
 namespace splinefig::cli {
 
@@ -12,5 +13,9 @@ namespace splinefig::cli {
 // bands of 16 rows resolved from its pieces, within the coverage tolerance 1/1024 (the other
 // bands and items exact)". Items are numbered from 1 in drawing order; at most five are named.
 std::string describe_raster(const render::RasterReport& report);
+
+// An animation's frames, one line per run of consecutive frames described alike, numbered from
+// 1: "frames 1-12 of 13: exact (...)", "frame 13 of 13: item 2: 3 of 16 bands ...".
+std::vector<std::string> describe_frames(const std::vector<render::RasterReport>& frames);
 
 }  // namespace splinefig::cli

@@ -201,20 +201,23 @@ void check_animation_size(const FigureSpec& spec, double scale) {
            std::to_string(static_cast<long long>(h)) + " px, over the limit of 2^28 pixels in all");
 }
 
-AnimationInfo write_animation(const FigureSpec& spec, const std::string& path, double scale, int threads) {
+AnimationInfo write_animation(const FigureSpec& spec, const std::string& path, double scale, int threads,
+                              std::vector<render::RasterReport>* reports) {
   const AnimationSpec& a = animation_of(spec);
   const int frames = animation_frames(spec);
   check_animation_size(spec, scale);
   const double w = std::round(a.width * scale), h = std::round(a.height * scale);
   WebpAnimation anim(static_cast<int>(w), static_cast<int>(h), a.loops);
   AnimationInfo info;
+  if (reports) reports->clear();
   for (int i = 0; i < frames; ++i) {
     const FigureScene fig = figure_scene(animation_frame_spec(spec, i), scale);
     if (i == 0) {
       info.width = fig.info.width;
       info.height = fig.info.height;
     }
-    anim.add(render::rasterize(fig.raster, threads), animation_delay(spec, i));
+    render::RasterReport* report = reports ? &reports->emplace_back() : nullptr;
+    anim.add(render::rasterize(fig.raster, threads, report), animation_delay(spec, i));
   }
   anim.write(path);
   info.file = std::filesystem::path(path).filename().string();

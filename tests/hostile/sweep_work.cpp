@@ -119,3 +119,58 @@ TEST_CASE("render and figures: --coverage-tolerance replaces the spec's, is chec
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("render -v of an animation: how each frame was drawn, runs of frames alike on one line") {
+  // Two keyframes of 1500 random points each, three frames (t = 0, 1/2, 1): every frame a
+  // dense self-crossing polyline, drawn in part from its pieces at the default tolerance.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::string frames = "frames = [";
+  char buf[64];
+  for (int f = 0; f < 2; ++f) {
+    frames += f ? "], [" : "[";
+    for (int i = 0; i < 1500; ++i) {
+      std::snprintf(buf, sizeof buf, "%s[%.4f, %.4f]", i ? ", " : "", u(rng), u(rng));
+      frames += buf;
+    }
+  }
+  frames += "]]\n";
+  const std::string spec = "[canvas]\nwidth = 256\nheight = 256\n[[axes]]\nx_range = [0, 1]\ny_range = [0, 1]\n"
+                           "[[axes.inbetween]]\nsteps = 2\nwidth = 1\n" + frames +
+                           "[animation]\nwidth = 256\nheight = 256\n";
+  const fs::path dir = scratch();
+  write_file(dir / "anim.toml", spec);
+  const Outcome dflt = run_in(dir, {"render", "anim.toml", "-o", "anim.webp", "-v"});
+  INFO(dflt.err);
+  REQUIRE(dflt.code == 0);
+  CHECK(fs::exists(dir / "anim.webp"));
+  // One line per run of frames described alike, covering frames 1 to 3 in order.
+  std::vector<std::string> lines;
+  for (std::size_t at = 0, nl; (nl = dflt.err.find('\n', at)) != std::string::npos; at = nl + 1)
+    lines.push_back(dflt.err.substr(at, nl - at));
+  REQUIRE_FALSE(lines.empty());
+  int next = 1;
+  for (const std::string& line : lines) {
+    CHECK_THAT(line, Catch::StartsWith("splinefig render: anim.toml: frame"));
+    const std::string one = "frame " + std::to_string(next) + " of 3: ";
+    const std::string run = "frames " + std::to_string(next) + "-";
+    REQUIRE((line.find(one) != std::string::npos || line.find(run) != std::string::npos));
+    if (line.find(one) != std::string::npos) {
+      ++next;
+    } else {
+      next = std::stoi(line.substr(line.find(run) + run.size())) + 1;
+      CHECK(line.find(run + std::to_string(next - 1) + " of 3: ") != std::string::npos);
+    }
+  }
+  CHECK(next == 4);
+  CHECK_THAT(dflt.err, Catch::Contains(" bands of 16 rows resolved from their pieces, within the coverage tolerance 1/1024"));
+  // --coverage-tolerance 0: every frame exact, said once for the three.
+  const Outcome exact = run_in(dir, {"render", "anim.toml", "-o", "exact.webp", "-v", "--coverage-tolerance", "0"});
+  REQUIRE(exact.code == 0);
+  CHECK(exact.err == "splinefig render: anim.toml: frames 1-3 of 3: exact (no band needed the coverage tolerance, 0)\n");
+  // Without -v nothing is said.
+  const Outcome quiet = run_in(dir, {"render", "anim.toml", "-o", "quiet.webp"});
+  CHECK(quiet.code == 0);
+  CHECK(quiet.err.empty());
+  fs::remove_all(dir);
+}

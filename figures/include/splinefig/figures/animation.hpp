@@ -5,6 +5,7 @@
 #include <splinefig/figures/figure.hpp>
 
 #include <string>
+#include <vector>
 
 namespace splinefig::figures {
 
@@ -36,6 +37,8 @@ void check_animation_size(const FigureSpec& spec, double scale);
 // them) and writes the animated WebP to `path` atomically. The frames, their size and their
 // product are checked against base/limits.hpp after scaling, before the first is drawn
 // (SpecFileError naming the [animation] table). Throws as figure_scene and WebpAnimation do.
-AnimationInfo write_animation(const FigureSpec& spec, const std::string& path, double scale = 1, int threads = 0);
+// With `reports`, it receives each frame's render::RasterReport, in frame order.
+AnimationInfo write_animation(const FigureSpec& spec, const std::string& path, double scale = 1, int threads = 0,
+                              std::vector<render::RasterReport>* reports = nullptr);
 
 }  // namespace splinefig::figures
