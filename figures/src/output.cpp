@@ -73,9 +73,10 @@ std::string figure_svg(const FigureScene& fig, const FigureFileOptions& o) {
   return vector::to_svg(fig.scene, vector_options(o));
 }
 
-// Plain text: the title's markup resolved ("$a$ = 0.5" is "a = 0.5"), as index.json has it.
+// Plain text: the title's markup resolved ("$a$ = 0.5" is "a = 0.5"), as index.json has it. A
+// reader sees it (a viewer's title bar, a browser's tab), so the file stem is no part of it.
 std::string file_title(const FigureSpec& spec) {
-  return spec.title.empty() ? spec.name : spec.name + ": " + detail::plain_text(spec.title);
+  return spec.title.empty() ? spec.name : detail::plain_text(spec.title);
 }
 
 void write_figure_file(const FigureScene& fig, const std::string& path, Format format, const FigureFileOptions& o,

@@ -39,14 +39,17 @@ Kernel parse_kernel(std::string_view spec) {
     if (what.rfind("unknown basis", 0) == 0) {
       const std::string_view name = spec.substr(0, spec.find(':'));
       auto known = split_names(known_bases());
-      known.insert(known.begin(), {"box", "tent", "lanczos3"});
+      const auto filters = split_names(known_filters());
+      known.insert(known.begin(), filters.begin(), filters.end());
       const auto near = near_misses(name, known);
       throw SpecError("unknown filter " + excerpt(name, '\'') + " (" +
                       (near.empty() ? "" : "did you mean " + or_list(near) + "? ") +
-                      "known: box, tent, lanczos3 and the bases " + known_bases() + ")");
+                      "known: " + known_filters() + " and the bases " + known_bases() + ")");
     }
     throw;
   }
 }
+
+std::string known_filters() { return "box, tent, lanczos3"; }
 
 }  // namespace splinefig

@@ -47,9 +47,9 @@ void write_figure_file(const FigureScene& fig, const std::string& path, Format f
 // and scale, the same throws but UnwritableFile).
 std::string figure_svg(const FigureScene& fig, const FigureFileOptions& options);
 
-// The title a figure's files carry (PNG description, SVG <title>, PDF Title): "NAME: TITLE"
-// with the title's markup resolved to plain text ("$a$ = 0.5" is "a = 0.5"), or the spec's
-// name when it has no title.
+// The title a figure's files carry (PNG description, SVG <title>, PDF Title): the figure's title
+// with its markup resolved to plain text ("$a$ = 0.5" is "a = 0.5"), as a viewer's title bar
+// shows it (no file stem), or the spec's name when it has no title.
 std::string file_title(const FigureSpec& spec);
 
 // SOURCE_DATE_EPOCH as seconds, or -1 when it is unset or not a number.

@@ -4,6 +4,7 @@
 #include <splinefig/kernel/kernel.hpp>
 #include <splinefig/spline/basis.hpp>
 
+#include <string>
 #include <string_view>
 
 namespace splinefig {
@@ -12,8 +13,11 @@ namespace splinefig {
 // of U M, its u^m coefficient M(n - m, n - p). Named by the basis's canonical spec.
 Kernel basis_kernel(const Basis& b);
 
-// Any basis spec (parse_basis), or box, tent, lanczos3. Throws SpecError naming the unknown
+// Any basis spec (parse_basis), or one of known_filters(). Throws SpecError naming the unknown
 // filter or the bad parameter.
 Kernel parse_kernel(std::string_view spec);
+// The filter names parse_kernel knows besides the bases, comma-separated: "box, tent, lanczos3"
+// (lanczos3 is Lanczos's windowed sinc with a = 3).
+std::string known_filters();
 
 }  // namespace splinefig
