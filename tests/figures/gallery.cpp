@@ -62,49 +62,6 @@ TEST_CASE("the gallery loads every figure in headless Chromium") {
   CHECK(fs::exists(dir / "gallery.png"));
 }
 
-TEST_CASE("the gallery fits phones to wide screens: no horizontal overflow at 390, 800, 1280 and 1920 px") {
-  const std::string chromium = find_chromium();
-  if (chromium.empty()) {
-    splinefig::testing_support::skip("chromium is not installed: the gallery's layout was not checked");
-    return;
-  }
-  auto dir = scratch("gallery-widths");
-  run("SOURCE_DATE_EPOCH=1700000000 " + exe() + " figures --format png,svg --out " + dir.string());
-  const std::string html = read_file(dir / "index.html");
-  CHECK(html.find("<meta name=\"viewport\"") != std::string::npos);
-  CHECK(html.find("srcset=\"cbasis.png 1x, cbasis.svg 2x\"") != std::string::npos);
-  CHECK(html.find("<a href=\"cbasis.svg\">SVG</a>") != std::string::npos);
-  CHECK(html.find("2023-11-14") != std::string::npos);
-  CHECK(html.find("id=\"filters\"") != std::string::npos);
-  CHECK(html.find("id=\"companions\"") != std::string::npos);
-  CHECK(html.find("<figure id=\"filter-zoneplate\" class=\"pixel-exact wide\">") != std::string::npos);  // [gallery] pixel_exact
-  // Each card names the source figure it reproduces, and its image's alt text is its title and
-  // caption; index.json carries the source of every figure.
-  CHECK(html.find("<span class=\"source\">Smith, Spline Tutorial Notes (1983), Figure CBASIS</span>") != std::string::npos);
-  CHECK(html.find("<span class=\"source\">the curve notes (Cubic spline curves), Fig. 9</span>") != std::string::npos);
-  CHECK(html.find("alt=\"Cardinal spline basis function (Catmull-Rom, a = 0.5): ") != std::string::npos);
-  const Json index = parse_json(read_file(dir / "index.json"));
-  REQUIRE(index["figures"].size() >= 30);
-  for (size_t i = 0; i < index["figures"].size(); ++i) {
-    INFO(index["figures"][i]["name"].string);
-    CHECK_FALSE(index["figures"][i]["source"].string.empty());
-  }
-  const std::string url = "file://" + fs::absolute(dir / "index.html").string();
-  for (int w : {390, 800, 1280, 1920}) {
-    const std::string flags = " --headless --no-sandbox --disable-gpu --allow-file-access-from-files"
-                              " --virtual-time-budget=10000 --window-size=" + std::to_string(w) + ",1400 ";
-    Result dom = run(chromium + flags + "--dump-dom " + url + " 2>/dev/null");
-    INFO(w << " px");
-    REQUIRE(dom.code == 0);
-    CHECK(dom.out.find("data-images-ok=\"yes\"") != std::string::npos);
-    CHECK(dom.out.find("data-overflow=\"no\"") != std::string::npos);
-    // At most two cards side by side; one below about 950 px (a phone, a narrow window).
-    CHECK(dom.out.find(w < 950 ? "data-columns=\"1\"" : "data-columns=\"2\"") != std::string::npos);
-    // Screenshots to look at (build/test-figures/gallery-widths-*/gallery-<w>.png).
-    run(chromium + flags + "--screenshot=" + (dir / ("gallery-" + std::to_string(w) + ".png")).string() + " " + url);
-  }
-}
-
 namespace {
 
 // Measures the gallery as laid out, with a script of this test's own (not the page's), run in a
@@ -113,6 +70,8 @@ namespace {
 const char* const kProbe = R"(<script>
 window.addEventListener("load", function () {
   var out = ["width " + window.innerWidth];
+  // What the page's own script found at load (it ran first): images loaded, overflow, columns.
+  ["images-ok", "overflow", "columns"].forEach(function (a) { out.push("page " + a + " " + document.body.getAttribute("data-" + a)); });
   var r = function (e) { var b = e.getBoundingClientRect(); return {l: b.left, t: b.top + window.scrollY, r: b.right, b: b.bottom + window.scrollY}; };
   document.querySelectorAll("section").forEach(function (section) {
     var grid = section.querySelector(".grid") || section;
@@ -161,13 +120,14 @@ window.addEventListener("load", function () {
 // Headless Chromium keeps a window at least 500 px wide, so the page is measured in an iframe
 // of the width asked for; the measurements come back by postMessage.
 std::string frame_html(int width) {
-  return "<!DOCTYPE html><html><body style=\"margin:0\"><pre id=\"probe\"></pre><iframe src=\"probe.html\" width=\"" +
-         std::to_string(width) + "\" height=\"1400\" style=\"border:0\"></iframe><script>window.addEventListener(\"message\","
+  return "<!DOCTYPE html><html><body style=\"margin:0\"><iframe src=\"probe.html\" width=\"" + std::to_string(width) +
+         "\" height=\"1400\" style=\"border:0;display:block\"></iframe><pre id=\"probe\"></pre><script>window.addEventListener(\"message\","
          " function (e) { document.getElementById(\"probe\").textContent = e.data; });</script></body></html>\n";
 }
 
 struct Measured {
-  std::string width;
+  std::string width;                               // the viewport's width as the page saw it
+  std::map<std::string, std::string> page;         // the page's own data-* attributes on <body>
   std::map<std::string, int> columns;             // section -> distinct card lefts
   std::vector<std::string> overlaps, holes;
   std::map<std::string, int> source;              // figure -> length of its source line
@@ -183,7 +143,7 @@ std::string unescape(std::string s) {
   return s;
 }
 
-Measured measure(const std::string& chromium, const fs::path& dir, int width) {
+Measured measure(const std::string& chromium, const fs::path& dir, int width, const fs::path& screenshot = {}) {
   std::string html = read_file(dir / "index.html");
   const size_t body = html.rfind("</body>");
   REQUIRE(body != std::string::npos);
@@ -196,6 +156,8 @@ Measured measure(const std::string& chromium, const fs::path& dir, int width) {
                             " --virtual-time-budget=10000 --window-size=" + std::to_string(std::max(width, 500) + 40) + ",1500 ";
   Result dom = run(chromium + flags + "--dump-dom file://" + fs::absolute(frame).string() + " 2>/dev/null");
   REQUIRE(dom.code == 0);
+  // A screenshot of the page in its frame, to look at.
+  if (!screenshot.empty()) run(chromium + flags + "--screenshot=" + screenshot.string() + " file://" + fs::absolute(frame).string());
   const size_t from = dom.out.find("<pre id=\"probe\">"), to = dom.out.find("</pre>", from);
   INFO("the measurements came back from the page");
   REQUIRE(from != std::string::npos);
@@ -208,6 +170,7 @@ Measured measure(const std::string& chromium, const fs::path& dir, int width) {
     in >> what >> id;
     std::getline(in >> std::ws, rest);
     if (what == "width") m.width = id;
+    else if (what == "page") m.page[id] = rest;
     else if (what == "columns") m.columns[id] = std::stoi(rest);
     else if (what == "overlap") m.overlaps.push_back(id + " " + rest);
     else if (what == "hole") m.holes.push_back(id + " " + rest);
@@ -281,5 +244,47 @@ TEST_CASE("the gallery as laid out in Chromium at 1280 and 390 px: two columns a
         CHECK(ch == nh);
       }
     }
+  }
+}
+
+TEST_CASE("the gallery fits phones to wide screens: no horizontal overflow at 390, 800, 1280 and 1920 px") {
+  const std::string chromium = find_chromium();
+  if (chromium.empty()) {
+    splinefig::testing_support::skip("chromium is not installed: the gallery's layout was not checked");
+    return;
+  }
+  auto dir = scratch("gallery-widths");
+  run("SOURCE_DATE_EPOCH=1700000000 " + exe() + " figures --format png,svg --out " + dir.string());
+  const std::string html = read_file(dir / "index.html");
+  CHECK(html.find("<meta name=\"viewport\"") != std::string::npos);
+  CHECK(html.find("srcset=\"cbasis.png 1x, cbasis.svg 2x\"") != std::string::npos);
+  CHECK(html.find("<a href=\"cbasis.svg\">SVG</a>") != std::string::npos);
+  CHECK(html.find("2023-11-14") != std::string::npos);
+  CHECK(html.find("id=\"filters\"") != std::string::npos);
+  CHECK(html.find("id=\"companions\"") != std::string::npos);
+  CHECK(html.find("<figure id=\"filter-zoneplate\" class=\"pixel-exact wide\">") != std::string::npos);  // [gallery] pixel_exact
+  // Each card names the source figure it reproduces, and its image's alt text is its title and
+  // caption; index.json carries the source of every figure.
+  CHECK(html.find("<span class=\"source\">Smith, Spline Tutorial Notes (1983), Figure CBASIS</span>") != std::string::npos);
+  CHECK(html.find("<span class=\"source\">the curve notes (Cubic spline curves), Fig. 9</span>") != std::string::npos);
+  CHECK(html.find("alt=\"Cardinal spline basis function (Catmull-Rom, a = 0.5): ") != std::string::npos);
+  const Json index = parse_json(read_file(dir / "index.json"));
+  REQUIRE(index["figures"].size() >= 30);
+  for (size_t i = 0; i < index["figures"].size(); ++i) {
+    INFO(index["figures"][i]["name"].string);
+    CHECK_FALSE(index["figures"][i]["source"].string.empty());
+  }
+  // Headless Chromium keeps its window at least 500 px wide, so the page is laid out in a frame
+  // of each width (measure()), and the width it saw is checked: 390 px is a phone's.
+  for (int w : {390, 800, 1280, 1920}) {
+    INFO(w << " px");
+    // Screenshots to look at (build/test-figures/gallery-widths-*/gallery-<w>.png).
+    Measured m = measure(chromium, dir, w, dir / ("gallery-" + std::to_string(w) + ".png"));
+    CHECK(m.width == std::to_string(w));
+    CHECK(m.page.count("images-ok") == 1);
+    CHECK(m.page["images-ok"] == "yes");
+    CHECK(m.page["overflow"] == "no");
+    // At most two cards side by side; one below about 950 px (a phone, a narrow window).
+    CHECK(m.page["columns"] == (w < 950 ? "1" : "2"));
   }
 }
