@@ -106,6 +106,7 @@ void ChainBuilder::end_chain() {
   for (std::size_t k = c.first + 1; k <= c.last; ++k) {
     c.xmin = std::min(c.xmin, v[k].x);
     c.xmax = std::max(c.xmax, v[k].x);
+    c.xdy += 0.5 * (v[k - 1].x + v[k].x) * (v[k].y - v[k - 1].y);
   }
   if (g_.chains.size() == g_.chains.capacity()) reserve_huge(g_.chains, std::max<std::size_t>(64, 2 * g_.chains.capacity()));
   g_.chains.push_back(c);

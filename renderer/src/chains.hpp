@@ -33,6 +33,8 @@ struct Chain {
   std::size_t first = 0, last = 0;  // vertex indices in Geometry::verts, inclusive, ascending y
   int dir = 1;                       // +1: the contour runs down (increasing y); -1: up
   double ymin = 0, ymax = 0, xmin = 0, xmax = 0;
+  double xdy = 0;  // the integral of x dy along the chain (ascending y): -dir xdy summed over a
+                   // shape's chains is the integral of its winding number over the clip box
 };
 
 // Vertex storage whose resize() leaves the new vertices unwritten (every vertex is written

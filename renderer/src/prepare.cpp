@@ -207,12 +207,15 @@ void prepare_item(const DrawItem& item, const ClipRegion* clip_path, const Compo
   }
   s.xmin = s.ymin = INFINITY;
   s.xmax = s.ymax = -INFINITY;
+  double ink = 0;
   for (auto c = first; c != last; ++c) {
     s.xmin = std::min(s.xmin, c->xmin);
     s.xmax = std::max(s.xmax, c->xmax);
     s.ymin = std::min(s.ymin, c->ymin);
     s.ymax = std::max(s.ymax, c->ymax);
+    ink -= c->dir * c->xdy;
   }
+  s.ink = std::abs(ink);
   if (s.clipped) {  // only where the shape and the clip meet
     Box own{INFINITY, INFINITY, -INFINITY, -INFINITY}, cut = own;
     for (auto c = first; c != last; ++c) {

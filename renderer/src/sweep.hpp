@@ -67,6 +67,11 @@ struct Shape {
   bool simple = false;  // |winding| <= 1 everywhere (a convex or simple contour): no sweep needed
   int orient = 1;       // for simple shapes: the winding number inside (+1 or -1)
   double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+  // The integral of the winding number over the clip box, in absolute value (-dir xdy summed over
+  // the chains, prepare_item): for a stroke, whose winding is >= 0 everywhere, no band of rows
+  // holds more (winding_area, work_estimate.hpp). Infinity while not known (an outline built
+  // band by band, outline_stream.hpp).
+  double ink = INFINITY;
   bool empty() const { return chain_begin == chain_end; }
 };
 
