@@ -143,7 +143,8 @@ void Outliner::open_piece(std::span<const Vec2> p, std::size_t a, std::size_t b)
   const std::size_t m = p.size() - 1;  // segments
   const double h = h_;
   out_.expect(3 * (b - a) + 64);
-  Segment prev = segment(p[a], p[a + 1]);
+  const Segment first = segment(p[a], p[a + 1]);
+  Segment prev = first;
   if (a == 0) {
     out_.move_to(p[0] + h * prev.n);
   } else {
@@ -151,14 +152,20 @@ void Outliner::open_piece(std::span<const Vec2> p, std::size_t a, std::size_t b)
     join(p[a], segment(p[a - 1], p[a]), prev, 1, buf_);
     out_.move_to(buf_.back());
   }
+  // The left side's joins go out as they are made; the right side's, from the same two
+  // segments, are kept and go out backward after the end (each segment is made once). The
+  // buffer is the thread's, kept from piece to piece (a piece's is up to a few MB, which would
+  // otherwise be mapped and faulted in afresh for every piece).
+  thread_local std::vector<Vec2> right;
+  right.clear();
   for (std::size_t j = a + 1; j < b; ++j) {
     Segment next = segment(p[j], p[j + 1]);
     buf_.clear();
     join(p[j], prev, next, 1, buf_);
     emit(buf_, false, false);
+    join(p[j], prev, next, -1, right);
     prev = next;
   }
-  Segment after = prev;  // the segment ending at p[b]
   if (b == m) {
     out_.line_to(p[m] + h * prev.n);
     cap(p[m], prev.d, prev.n);
@@ -172,20 +179,14 @@ void Outliner::open_piece(std::span<const Vec2> p, std::size_t a, std::size_t b)
     join(p[b], prev, next, -1, buf_);
     out_.move_to(buf_.front());
   }
-  for (std::size_t j = b - 1; j > a; --j) {
-    Segment before = segment(p[j - 1], p[j]);
-    buf_.clear();
-    join(p[j], before, after, -1, buf_);
-    emit(buf_, true, false);
-    after = before;
-  }
+  for (std::size_t k = right.size(); k-- > 0;) out_.line_to(right[k]);
   if (a == 0) {
-    Vec2 mn{-after.n.x, -after.n.y}, md{-after.d.x, -after.d.y};
+    Vec2 mn{-first.n.x, -first.n.y}, md{-first.d.x, -first.d.y};
     out_.line_to(p[0] + h * mn);
     cap(p[0], md, mn);
   } else {
     buf_.clear();
-    join(p[a], segment(p[a - 1], p[a]), after, -1, buf_);
+    join(p[a], segment(p[a - 1], p[a]), first, -1, buf_);
     emit(buf_, true, false);
   }
   out_.leave_open();
