@@ -387,7 +387,7 @@ double stroke_vertex_bound(std::span<const Vec2> pts, bool closed, const StrokeS
   for (const Vec2& p : pts) {
     if (m > 0 && p == prev) continue;
     if (m > 0) {
-      const Vec2 e = p - prev, d = (1.0 / length(e)) * e;
+      const Vec2 d = segment(prev, p).d;  // as the outline makes it
       if (m > 1) joins += join_at(prev, d_prev, d); else d_first = d;
       d_prev = d;
     }
@@ -400,7 +400,7 @@ double stroke_vertex_bound(std::span<const Vec2> pts, bool closed, const StrokeS
     ends = 2 * cap_at(first);
   } else if (closed) {
     if (!(prev == first)) {
-      const Vec2 e = first - prev, d = (1.0 / length(e)) * e;
+      const Vec2 d = segment(prev, first).d;
       joins += join_at(prev, d_prev, d) + join_at(first, d, d_first);
     } else {
       joins += join_at(first, d_prev, d_first);
