@@ -143,10 +143,18 @@ void Scene::set_coverage_tolerance(double tolerance) {
   tolerance_ = tolerance;
 }
 
-// Appends with geometric growth into huge-page-advised storage (100k items are tens of MB); the
-// item's clip is noted from the first clipped item on.
+// Appends with geometric growth into huge-page-advised storage (100k items are tens of MB): the
+// new storage is advised before the items move into it, so that the move itself, which touches
+// it first, takes huge pages rather than one fault per 4 KiB (reserve_huge advises only what it
+// leaves untouched). The item's clip is noted from the first clipped item on.
 void Scene::record(DrawItem&& item) {
-  if (items_.size() == items_.capacity()) reserve_huge(items_, std::max<std::size_t>(64, 2 * items_.capacity()));
+  if (items_.size() == items_.capacity()) {
+    std::vector<DrawItem> grown;
+    grown.reserve(std::max<std::size_t>(64, 2 * items_.capacity()));
+    advise_huge_pages(grown.data(), grown.capacity() * sizeof(DrawItem));
+    for (DrawItem& it : items_) grown.push_back(std::move(it));
+    items_.swap(grown);
+  }
   if (clip_ || !clips_.empty()) {
     clips_.resize(items_.size());
     clips_.push_back(clip_);
