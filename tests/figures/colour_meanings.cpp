@@ -67,8 +67,9 @@ std::vector<std::string> contradictions(const std::vector<figures::FigureInfo>& 
   for (const auto& info : infos)
     for (const auto& ax : info.axes)
       for (const auto& s : ax.series) {
-        if (s.kind == "fill" || s.piece) continue;  // areas and the coloured pieces of one kernel
-        const std::string c = concept_of(s.label);
+        if (s.kind == "fill") continue;  // areas
+        // The coloured pieces of one kernel are no concept, but their colour must not be one's.
+        const std::string c = s.piece ? "" : concept_of(s.label);
         if (!c.empty()) styles[c].emplace(style_of(s), Seen{info.name, s.label});
         meanings[s.color].emplace(c, Seen{info.name, s.label});
       }
@@ -151,6 +152,16 @@ TEST_CASE("the check catches a concept drawn two ways and a colour with two mean
   // the B-spline and one colour with two meanings.
   const auto red = layout_of(head + series("B-spline", "#d55e00", "dash = [5, 4]\n"), "red");
   CHECK(contradictions({a, red}).size() == 2);
+  // A kernel's coloured pieces are no concept, but the B-spline's blue for one of its halves is
+  // a second meaning of that blue; a colour no concept has is theirs to take.
+  const std::string kernel = "[axes]\nx_range = [-2, 2]\ny_range = [-0.2, 1.1]\n[[axes.kernel]]\nbasis = \"catmull-rom\"\n"
+                             "labels = [\"$c_3$\", \"$c_2$\", \"$c_1$\", \"$c_0$\"]\n";
+  const auto halves_blue = layout_of(kernel + "colors = [\"#0072b2\", \"#0072b2\", \"#e69f00\", \"#e69f00\"]\n", "hb");
+  REQUIRE(halves_blue.axes.at(0).series.size() == 4);
+  CHECK(halves_blue.axes.at(0).series.at(0).piece);
+  CHECK(contradictions({a, halves_blue}).size() == 1);
+  const auto halves_indigo = layout_of(kernel + "colors = [\"#332288\", \"#332288\", \"#e69f00\", \"#e69f00\"]\n", "hi");
+  CHECK(contradictions({a, halves_indigo}).empty());
   // Colours that draw no concept may recur with several meanings.
   const auto free1 = layout_of(head + series("$b_1$ = 2", "#333333"), "f1");
   const auto free2 = layout_of(head + series("key frames", "#333333"), "f2");
