@@ -1,9 +1,11 @@
 // rasterize(): items become exact geometry (prepare.hpp), then the canvas is processed in
-// horizontal bands of rows, each band by one thread, every item composited in order with
-// Porter-Duff over (compositor.hpp). A band's pixels depend only on the geometry and its own rows, never on
-// which thread ran it or on the other bands, so any thread count gives identical bytes.
+// horizontal bands of rows (on several threads, blocks of bands, each by one thread), every
+// item composited in order with Porter-Duff over (compositor.hpp). A band's pixels depend only
+// on the geometry and its own rows, never on which thread ran it or on the other bands, so any
+// thread count gives identical bytes.
 #include "box_coverage.hpp"
 #include "filter_coverage.hpp"
+#include "item_reach.hpp"
 #include <splinefig/base/huge_pages.hpp>
 #include "raster_item.hpp"
 #include "piece_coverage.hpp"
@@ -349,79 +351,189 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
     return img;
   }
 
-  // Items are prepared by the threads too: in runs of consecutive items, each run into a
-  // geometry of its own. An item's chains and vertices are the same in any run (they are
-  // appended in order and only their relative order matters), so the bytes do not depend on
-  // how items fall into runs. A long stroke's outline is built in pieces by its preparer and
-  // helper threads it starts (prepare.hpp); while other runs are being prepared too, the
-  // threads outnumber the cores for that while, which costs a little time and no bytes.
+  // Several threads: the canvas is cut into blocks of whole bands, each block drawn by one
+  // thread with every item meeting it, in item order. An item whose rows lie within two
+  // neighbouring blocks (item_reach.hpp, known before its geometry is built) is local: the
+  // thread of each block it meets prepares it, draws the block's rows and drops it, as one
+  // thread does, so its geometry stays in cache and memory holds one such item per thread (one
+  // in a few small items is prepared twice, which costs less than keeping them all). The other
+  // items (long strokes, and every item under a filter other than the box) are shared: prepared
+  // first, by all threads, and drawn in each block they meet. A row's coverage is the same
+  // whichever block, thread or preparation gives it (strips are aligned to the bands), so the
+  // bytes do not depend on the thread count.
+  const std::size_t n = items.size();
+  std::vector<int> lo_row(n, 0), hi_row(n, H);  // conservative rows [lo, hi) of each item
+  if (box)
+    for (std::size_t i = 0; i < n; ++i) {
+      double y0, y1;
+      if (!item_y_range(items[i], y0, y1)) continue;
+      lo_row[i] = static_cast<int>(std::clamp(std::floor(y0), 0.0, static_cast<double>(H)));
+      hi_row[i] = static_cast<int>(std::clamp(std::ceil(y1), 0.0, static_cast<double>(H)));
+    }
+  // Blocks of whole bands, handed out in order to whichever thread is free, in decreasing sizes
+  // (guided scheduling): each a (2 x threads)-th of the bands left, down to one band, so that
+  // the first blocks are large (few local items are met by two) and the last ones small (the
+  // threads finish together). 1024 rows on 2 threads: 16, 12, 9, 7, 5, 4, 3, 2, 2, 1, 1, 1, 1
+  // bands.
+  std::vector<int> block_row0;         // each block's first row; the last entry is H
+  std::vector<std::uint32_t> block_of;  // each band's block
+  for (int b = 0; b < bands;) {
+    const int size = std::max(1, (bands - b + 2 * nthreads - 1) / (2 * nthreads));
+    block_row0.push_back(b * kBandRows);
+    block_of.insert(block_of.end(), static_cast<std::size_t>(size), static_cast<std::uint32_t>(block_row0.size() - 1));
+    b += size;
+  }
+  block_row0.push_back(H);
+  block_of.resize(static_cast<std::size_t>(bands));
+  const std::size_t blocks = block_row0.size() - 1;
+  auto first_block = [&](int row) { return block_of[static_cast<std::size_t>(row / kBandRows)]; };
+  auto last_block = [&](int row_end) { return block_of[static_cast<std::size_t>((row_end - 1) / kBandRows)]; };
+  // Local items met by two blocks count their work and the bands drawn from their pieces in a
+  // slot of their own, shared by the two blocks' threads.
+  constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
+  std::vector<std::uint8_t> local(n, 0);
+  std::vector<std::uint32_t> local_slot(n, kNoSlot);
+  std::uint32_t local_slots = 0;
+  std::vector<std::uint32_t> shared;  // the shared items, in order
+  for (std::size_t i = 0; i < n; ++i) {
+    if (hi_row[i] <= lo_row[i]) continue;  // nothing on the canvas
+    const std::uint32_t k = last_block(hi_row[i]) - first_block(lo_row[i]) + 1;
+    if (box && k <= 2) {
+      local[i] = 1;
+      if (k == 2) local_slot[i] = local_slots++;
+    } else {
+      shared.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  std::vector<std::atomic<std::uint64_t>> local_spent(local_slots);
+  std::vector<std::atomic<int>> local_piece_bands(local_slots);
+
+  // Shared items are prepared in runs of consecutive ones, each run into a geometry of its own. An
+  // item's chains and vertices are the same in any run (they are appended in order and only
+  // their relative order matters), so the bytes do not depend on how items fall into runs. A long
+  // stroke's outline is built in pieces by its preparer and helper threads it starts
+  // (prepare.hpp); while other runs are being prepared too, the threads outnumber the cores for
+  // that while, which costs a little time and no bytes.
   std::vector<Prepared> prep;
-  reserve_huge(prep, items.size());
-  prep.resize(items.size());
-  const std::size_t runs = std::min<std::size_t>(items.size(), static_cast<std::size_t>(nthreads) * 8);
+  reserve_huge(prep, shared.size());
+  prep.resize(shared.size());
+  const std::size_t runs = std::min<std::size_t>(shared.size(), static_cast<std::size_t>(nthreads) * 8);
   std::vector<Geometry> geoms(runs);
-  std::vector<std::uint32_t> run_of(items.size());
+  std::vector<std::uint32_t> run_of(shared.size());
+  std::vector<double> excess(n, 0.0);  // crossings past the limit, found before sweeping
   {
-    auto run_begin = [&](std::size_t r) { return r * items.size() / runs; };
+    auto run_begin = [&](std::size_t r) { return r * shared.size() / runs; };
     for (std::size_t r = 0; r < runs; ++r)
-      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) run_of[i] = static_cast<std::uint32_t>(r);
-    std::vector<double> excess(items.size(), 0.0);
+      for (std::size_t k = run_begin(r); k < run_begin(r + 1); ++k) run_of[k] = static_cast<std::uint32_t>(r);
     parallel_for(runs, nthreads, [&](std::size_t r, int) {
-      for (std::size_t i = run_begin(r); i < run_begin(r + 1); ++i) {
-        prepare(i, prep[i], geoms[r], nthreads);
-        if (prep[i].row1 > prep[i].row0 && !eligible(i)) excess[i] = excess_crossings(geoms[r], prep[i], scene.max_crossings_);
+      for (std::size_t k = run_begin(r); k < run_begin(r + 1); ++k) {
+        const std::size_t i = shared[k];
+        prepare(i, prep[k], geoms[r], nthreads);
+        if (prep[k].row1 > prep[k].row0 && !eligible(i)) excess[i] = excess_crossings(geoms[r], prep[k], scene.max_crossings_);
       }
     });
-    // The first item over the limit, whichever thread found it: the same message on any count.
-    for (std::size_t i = 0; i < items.size(); ++i)
-      if (excess[i] > 0) refuse_work(items[i], i, excess[i], scene.max_crossings_);
   }
-  // Each swept item's work over all bands, against the one limit: an item is refused exactly
-  // when its total passes the limit, whichever bands and threads counted it (a band stops once
-  // the total, with its own share, passes it; the totals of items drawn in full do not depend
-  // on the order). The first refused item is the one named: once an item is refused, later
-  // items are skipped, earlier ones still drawn in full, so the lowest index left is the first
-  // item over the limit on any thread count.
+  // Each shared item's sweep work over all blocks, against the one limit: an item is refused
+  // exactly when its total passes the limit, whichever blocks and threads counted it (a block
+  // stops once the total, with its own share, passes it; the totals of items drawn in full do
+  // not depend on the order). A local item is counted by its block, or by its two blocks in a
+  // slot of its own (above) in the same way. The first refused item is the one named: once an item is refused, later items are
+  // skipped, earlier ones still drawn in full, so the lowest index left is the first item over
+  // the limit on any thread count.
   std::uint32_t slots = 0;
   for (Prepared& p : prep)
     if (!p.raster && !p.shape.simple && !p.shape.empty() && p.row1 > p.row0) p.work_slot = slots++;
   std::vector<std::atomic<std::uint64_t>> spent(slots);
   std::vector<std::atomic<int>> slot_piece_bands(slots);
   std::vector<LazyPieces> lazy(slots);
-  std::atomic<std::size_t> first_over{items.size()};
+  std::atomic<std::size_t> first_over{n};
   auto note_over = [&](std::size_t i) {
     std::size_t cur = first_over.load();
     while (i < cur && !first_over.compare_exchange_weak(cur, i)) {}
   };
-  // Which items touch which band, in item order.
-  std::vector<std::vector<std::uint32_t>> band_items(static_cast<std::size_t>(bands));
-  for (std::uint32_t i = 0; i < prep.size(); ++i) {
-    if (prep[i].row1 <= prep[i].row0) continue;
-    for (int b = prep[i].row0 / kBandRows; b <= (prep[i].row1 - 1) / kBandRows; ++b)
-      band_items[static_cast<std::size_t>(b)].push_back(i);
+  for (std::size_t k = 0; k < shared.size(); ++k)
+    if (excess[shared[k]] > 0) note_over(shared[k]);
+  // Which items meet which block, in item order: (item, shared index or kLocal).
+  constexpr std::uint32_t kLocal = ~std::uint32_t{0};
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> block_items(blocks);
+  for (std::size_t i = 0, k = 0; i < n; ++i) {
+    if (local[i]) {
+      for (std::uint32_t b = first_block(lo_row[i]); b <= last_block(hi_row[i]); ++b)
+        block_items[b].emplace_back(static_cast<std::uint32_t>(i), kLocal);
+      continue;
+    }
+    if (k == shared.size() || shared[k] != i) continue;
+    const Prepared& p = prep[k];
+    if (p.row1 > p.row0)
+      for (std::uint32_t b = first_block(p.row0); b <= last_block(p.row1); ++b)
+        block_items[b].emplace_back(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k));
+    ++k;
   }
 
-  // Each thread keeps its scratch (a band's accumulators, the sweep's and the filter's state)
-  // across the bands it draws; a band is drawn the same whichever thread draws it.
+  // Each thread keeps its scratch (a band's accumulators, the sweep's and the filter's state,
+  // a local item's geometry) across the blocks it draws; a block is drawn the same whichever
+  // thread draws it.
   struct Scratch {
     BoxBand band;
     FilterScratch fs;
     StripSweep sweep;
     PieceCoverage::Scratch ps;
+    Geometry geom;
+    Prepared p;
   };
   std::vector<std::unique_ptr<Scratch>> scratch(static_cast<std::size_t>(nthreads));
-  parallel_for(static_cast<std::size_t>(bands), nthreads, [&](std::size_t b, int worker) {
+  parallel_for(blocks, nthreads, [&](std::size_t b, int worker) {
     auto& s = scratch[static_cast<std::size_t>(worker)];
     if (!s) {
       s = std::make_unique<Scratch>();
       s->band.reset(W, kBandRows);
     }
-    const int r0 = static_cast<int>(b) * kBandRows, r1 = std::min(H, r0 + kBandRows);
-    clear_rows(r0, r1);  // by the band's thread, like everything else in its rows
-    for (std::uint32_t i : band_items[b]) {
+    const int r0 = block_row0[b], r1 = block_row0[b + 1];
+    clear_rows(r0, r1);  // by the block's thread, like everything else in its rows
+    for (auto [i, k] : block_items[b]) {
       if (i >= first_over.load(std::memory_order_relaxed)) break;
-      const Prepared& p = prep[i];
-      const Geometry& g = geoms[run_of[i]];
+      if (k == kLocal) {
+        Prepared& p = s->p;
+        s->geom.verts.clear();
+        s->geom.chains.clear();
+        p = Prepared{};
+        prepare(i, p, s->geom, 1);
+        if (p.row1 <= p.row0 || p.row1 <= r0 || p.row0 >= r1) continue;
+        if (p.row0 < lo_row[i] || p.row1 > hi_row[i]) throw std::logic_error("an item reaching beyond the rows found for it");
+        if (!eligible(i))
+          if (const double e = excess_crossings(s->geom, p, scene.max_crossings_)) {
+            std::atomic_ref<double>(excess[i]).store(e, std::memory_order_relaxed);  // the same from either block
+            note_over(i);
+            break;
+          }
+        if (p.raster) {
+          composite_raster(*p.raster, comp, img, r0, r1);
+          continue;
+        }
+        const std::uint32_t slot = local_slot[i];
+        std::atomic<std::uint64_t>* total = slot == kNoSlot ? nullptr : &local_spent[slot];
+        const std::uint64_t used = total ? total->load() : 0;
+        if (used > budget) {
+          note_over(i);
+          break;
+        }
+        LazyPieces pieces;
+        const BandWork w = render_box(s->geom, p, items[i], eligible(i) ? &pieces : nullptr, img, r0, r1, s->band,
+                                      s->sweep, s->ps, budget - used);
+        if (w.over || (total && total->fetch_add(w.work) + w.work > budget)) {
+          note_over(i);
+          break;
+        }
+        if (!total) {
+          note_bands(i, p, w.piece_bands);
+        } else {
+          local_piece_bands[slot] += w.piece_bands;
+          if (report && p.row0 >= r0) item_bands[i] = (p.row1 - 1) / kBandRows - p.row0 / kBandRows + 1;  // one block
+        }
+        continue;
+      }
+      const Prepared& p = prep[k];
+      const Geometry& g = geoms[run_of[k]];
       if (p.raster) {
         composite_raster(*p.raster, comp, img, r0, r1);
         continue;
@@ -432,8 +544,8 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
         note_over(i);
         break;
       }
-      bool over;
-      std::uint64_t work;
+      bool over = false;
+      std::uint64_t work = 0;
       if (box) {
         LazyPieces* pieces = total && eligible(i) ? &lazy[p.work_slot] : nullptr;
         const BandWork w = render_box(g, p, items[i], pieces, img, r0, r1, s->band, s->sweep, s->ps, budget - used);
@@ -441,10 +553,12 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
         work = w.work;
         if (w.piece_bands) slot_piece_bands[p.work_slot] += w.piece_bands;
       } else {
-        s->sweep.set_budget(budget - used);
-        render_filtered(g, p, grid, img, r0, r1, s->fs, s->sweep);
-        over = s->sweep.over();
-        work = s->sweep.work();
+        for (int y = r0; y < r1 && !over; y += kBandRows) {  // band by band, as one thread
+          s->sweep.set_budget(budget - used - std::min(budget - used, work));
+          render_filtered(g, p, grid, img, y, std::min(r1, y + kBandRows), s->fs, s->sweep);
+          over = s->sweep.over();
+          work += s->sweep.work();
+        }
       }
       if (total && (over || total->fetch_add(work) + work > budget)) {
         note_over(i);
@@ -452,10 +566,18 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
       }
     }
   });
-  if (first_over.load() < items.size()) refuse_sweep(items[first_over.load()], first_over.load(), scene.max_crossings_);
+  if (const std::size_t i = first_over.load(); i < n) {
+    if (excess[i] > 0) refuse_work(items[i], i, excess[i], scene.max_crossings_);
+    refuse_sweep(items[i], i, scene.max_crossings_);
+  }
+  if (report) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (local_slot[i] != kNoSlot) piece_bands[i] = local_piece_bands[local_slot[i]].load();
+  }
   if (report)
-    for (std::size_t i = 0; i < prep.size(); ++i)
-      if (prep[i].work_slot != Prepared::kNoWorkSlot) note_bands(i, prep[i], slot_piece_bands[prep[i].work_slot].load());
+    for (std::size_t k = 0; k < shared.size(); ++k)
+      if (prep[k].work_slot != Prepared::kNoWorkSlot)
+        note_bands(shared[k], prep[k], slot_piece_bands[prep[k].work_slot].load());
   finish();
   return img;
 }
