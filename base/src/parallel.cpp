@@ -126,7 +126,7 @@ void parallel_for(std::size_t n, int threads, const std::function<void(std::size
 }
 
 std::size_t split_from_both_ends(std::size_t n, int threads, const std::function<void(std::size_t)>& mine,
-                                 const std::function<void(std::size_t)>& theirs) {
+                                 const std::function<void(std::size_t, int)>& theirs) {
   const int workers = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(worker_count(threads)), std::max<std::size_t>(n, 1)));
   std::mutex mutex;
   std::size_t lo = 0, hi = n;  // the items not yet taken
@@ -140,7 +140,10 @@ std::size_t split_from_both_ends(std::size_t n, int threads, const std::function
   };
   run_team(workers - 1, [&](int worker) {
     try {
-      for (std::size_t k; take(worker == 0, k);) (worker == 0 ? mine : theirs)(k);
+      for (std::size_t k; take(worker == 0, k);) {
+        if (worker == 0) mine(k);
+        else theirs(k, worker);
+      }
     } catch (...) {
       failure.record();
       std::lock_guard<std::mutex> lock(mutex);

@@ -32,12 +32,13 @@ void parallel_for(std::size_t n, int threads, const std::function<void(std::size
 
 // Shares items [0, n) between the calling thread, which takes them from the front (mine(k) for
 // k = 0, 1, ...), and up to worker_count(threads) - 1 helpers, which take them from the back
-// (theirs(k) for k = n - 1, n - 2, ...), each k once. Returns the m such that mine ran for
+// (theirs(k, worker) for k = n - 1, n - 2, ..., with worker in [1, worker_count(threads)) naming
+// the helper, for scratch kept per thread), each k once. Returns the m such that mine ran for
 // [0, m) and theirs for [m, n): the caller's items are a prefix, which it may write straight
 // into their final place while the helpers' items are kept aside. Refused helpers and
 // exceptions as for parallel_for.
 std::size_t split_from_both_ends(std::size_t n, int threads, const std::function<void(std::size_t)>& mine,
-                                 const std::function<void(std::size_t)>& theirs);
+                                 const std::function<void(std::size_t, int)>& theirs);
 
 // The bytes a process can still allocate: the least of what is left under RLIMIT_AS and
 // RLIMIT_DATA, the memory the system calls available (MemAvailable) and what is left under the
