@@ -133,6 +133,9 @@ int run(const FiguresArgs& a, const CLI::App& app) {
       std::fflush(stdout);
       if (a.verbose && r.raster_report)
         std::fprintf(stderr, "splinefig figures: %s: %s\n", r.name.c_str(), splinefig::cli::describe_raster(*r.raster_report).c_str());
+      if (a.verbose)
+        for (const std::string& line : splinefig::cli::describe_frames(r.frame_reports))
+          std::fprintf(stderr, "splinefig figures: %s.webp: %s\n", r.name.c_str(), line.c_str());
       done.push_back(std::move(*r.info));
     } else {
       ++failed;
@@ -173,7 +176,7 @@ const splinefig::cli::Registration reg{
       app.add_option("--coverage-tolerance", a->coverage_tolerance,
                      "Coverage error accepted where a dense stroke is drawn from its pieces, in [0, 1] (0: exact everywhere); replaces every spec's [canvas] coverage_tolerance")
           ->type_name("FLOAT");
-      app.add_flag("-v,--verbose", a->verbose, "Say on stderr, per figure, how it was rasterized: exactly, or which items had bands drawn within the coverage tolerance");
+      app.add_flag("-v,--verbose", a->verbose, "Say on stderr, per figure and per run of its animation's frames drawn alike, how it was rasterized: exactly, or which items had bands drawn within the coverage tolerance");
       app.add_option("--specs", a->specs, "Directory of specs to render instead of the built-in ones")->type_name("PATH");
       app.footer("Example: splinefig figures --out out/figures --only bias,arclength --scale 2 --format png,svg");
       return splinefig::cli::Runner([a, &app] { return run(*a, app); });

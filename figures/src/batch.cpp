@@ -94,7 +94,8 @@ BatchResult render_one(const SpecFile& s, const BatchOptions& o, int raster_thre
     if (spec.animation && writes_png(o)) {
       raster.reset();
       const std::string file = s.name + ".webp";
-      AnimationInfo a = write_animation(spec, (std::filesystem::path(o.out_dir) / file).string(), o.scale, raster_threads);
+      AnimationInfo a = write_animation(spec, (std::filesystem::path(o.out_dir) / file).string(), o.scale, raster_threads,
+                                        &result.frame_reports);
       a.file = file;
       fig.info.files.push_back(file);
       fig.info.animation = std::move(a);

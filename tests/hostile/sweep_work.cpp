@@ -172,5 +172,21 @@ TEST_CASE("render -v of an animation: how each frame was drawn, runs of frames a
   const Outcome quiet = run_in(dir, {"render", "anim.toml", "-o", "quiet.webp"});
   CHECK(quiet.code == 0);
   CHECK(quiet.err.empty());
+  // figures -v: after the still figure's line, the same lines for its animation as render's,
+  // naming the file.
+  fs::create_directories(dir / "specs");
+  fs::copy_file(dir / "anim.toml", dir / "specs" / "anim.toml");
+  const Outcome figs = run_in(dir, {"figures", "--specs", "specs", "--out", "out", "-v"});
+  INFO(figs.err);
+  REQUIRE(figs.code == 0);
+  CHECK(fs::exists(dir / "out" / "anim.webp"));
+  const std::string said = "splinefig render: anim.toml: ";
+  std::string expected;
+  for (const std::string& line : lines) expected += "splinefig figures: anim.webp: " + line.substr(said.size()) + "\n";
+  CHECK_THAT(figs.err, Catch::StartsWith("splinefig figures: anim: ") && Catch::EndsWith(expected));
+  const Outcome figs_exact = run_in(dir, {"figures", "--specs", "specs", "--out", "out", "-v", "--coverage-tolerance", "0"});
+  REQUIRE(figs_exact.code == 0);
+  CHECK_THAT(figs_exact.err,
+             Catch::EndsWith("splinefig figures: anim.webp: frames 1-3 of 3: exact (no band needed the coverage tolerance, 0)\n"));
   fs::remove_all(dir);
 }

@@ -32,6 +32,8 @@ struct BatchResult {
   double cpu_ms = -1;               // the figure's own CPU time, when it ran on one thread
   // How the still figure was rasterized, when a PNG or EXR was written (output.hpp).
   std::optional<render::RasterReport> raster_report;
+  // How each frame of its animation was rasterized, when one was written; empty otherwise.
+  std::vector<render::RasterReport> frame_reports;
 };
 
 // Loads, renders and writes every spec. Figures render in parallel, one per worker: a
