@@ -11,9 +11,11 @@
 //           on the canvas (R1k, R10k, R30k, R100k, R1M: 10^3 to 10^6 points; the crossings grow
 //           as n^2), or a random walk with normal steps (sigma 8) reflected into the canvas (Rw100k,
 //           Rw1M: 10^5 and 10^6 points).
+// stroke/<A1|A3|B|C>/rasterize and rasterize-mt time rasterize alone, on one thread and on all
+// cores, the scene recorded before the timing.
 // After the runs it prints the ratio table: splinefig's one-thread CPU time against Cairo's,
-// AGG's and Blend2D's, and its wall-time speed-up on all threads, each marked where it misses
-// its goal.
+// AGG's and Blend2D's, and its wall-time speed-up on all threads (the whole drawing, and
+// rasterize alone), each marked where it misses its goal.
 // accuracy/<set>/<impl> renders random strokes (set "random") or seeded walks of hairpins,
 // near-reversals and sub-width segments (set "walks") and reports the coverage error against the
 // exact union oracle of the tests (counters max_err, mean_err); it is measured once, not timed.
@@ -178,9 +180,7 @@ const Workload& workload(char id) {
 }
 
 // ---- splinefig -------------------------------------------------------------------------
-splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
-                         sr::Color ink = {0, 0, 0, 1}, double tolerance = sr::kDefaultCoverageTolerance,
-                         sr::RasterReport* report = nullptr) {
+sr::Scene splinefig_scene(const Workload& w, int size, sr::Color bg, sr::Color ink, double tolerance) {
   sr::Scene s(size, size, bg);
   s.set_max_crossings(INFINITY);  // R30k crosses about 4e8 times, past the default work limit
   s.set_coverage_tolerance(tolerance);
@@ -190,6 +190,13 @@ splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize
   st.cap = w.cap;
   st.miter_limit = 4;
   for (const Path& p : w.paths) s.stroke_polyline(p.pts, false, st, ink);
+  return s;
+}
+
+splinefig::Image draw_splinefig(const Workload& w, int threads, int size = kSize, sr::Color bg = {1, 1, 1, 1},
+                         sr::Color ink = {0, 0, 0, 1}, double tolerance = sr::kDefaultCoverageTolerance,
+                         sr::RasterReport* report = nullptr) {
+  const sr::Scene s = splinefig_scene(w, size, bg, ink, tolerance);
   return sr::rasterize(s, threads, report);
 }
 
@@ -336,6 +343,16 @@ void BM_splinefig(benchmark::State& state, char id, int threads, double toleranc
   const Workload& w = workload(id);
   for (auto _ : state) {
     splinefig::Image img = draw_splinefig(w, threads, kSize, {1, 1, 1, 1}, {0, 0, 0, 1}, tolerance);
+    benchmark::DoNotOptimize(img.pixels.data());
+  }
+}
+
+// rasterize alone, the scene recorded once before the timing: what the threads share (recording
+// runs on the caller's thread whatever the thread count).
+void BM_splinefig_raster(benchmark::State& state, char id, int threads) {
+  const sr::Scene s = splinefig_scene(workload(id), kSize, {1, 1, 1, 1}, {0, 0, 0, 1}, sr::kDefaultCoverageTolerance);
+  for (auto _ : state) {
+    splinefig::Image img = sr::rasterize(s, threads);
     benchmark::DoNotOptimize(img.pixels.data());
   }
 }
@@ -569,6 +586,10 @@ void register_all() {
     if (id != '1' && id != '3' && id != 'B')
       benchmark::RegisterBenchmark((base + "splinefig-exact").c_str(), BM_splinefig, id, 1, 0.0)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "splinefig-mt").c_str(), BM_splinefig, id, all, tol)->Unit(benchmark::kMillisecond)->UseRealTime();
+    if (id == '1' || id == '3' || id == 'B' || id == 'C') {
+      benchmark::RegisterBenchmark((base + "rasterize").c_str(), BM_splinefig_raster, id, 1)->Unit(benchmark::kMillisecond)->UseRealTime();
+      benchmark::RegisterBenchmark((base + "rasterize-mt").c_str(), BM_splinefig_raster, id, all)->Unit(benchmark::kMillisecond)->UseRealTime();
+    }
     benchmark::RegisterBenchmark((base + "cairo").c_str(), BM_cairo, id)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "agg").c_str(), BM_agg, id)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((base + "blend2d").c_str(), BM_blend2d, id)->Unit(benchmark::kMillisecond);
@@ -626,8 +647,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
     std::fprintf(out, "(Blend2D %u.%u.%u, synchronous, 1 thread)\n", BL_VERSION >> 16, (BL_VERSION >> 8) & 0xFFu,
                  BL_VERSION & 0xFFu);
 #endif
-    std::fprintf(out, "%-8s %11s %11s %11s %11s %9s %9s %10s %9s\n", "workload", "splinefig", "cairo", "agg",
-                 "blend2d", "vs cairo", "vs agg", "vs blend2d", "threads");
+    std::fprintf(out, "%-8s %11s %11s %11s %11s %9s %9s %10s %9s %10s\n", "workload", "splinefig", "cairo", "agg",
+                 "blend2d", "vs cairo", "vs agg", "vs blend2d", "threads", "rasterize");
     auto cell = [&](const std::map<std::string, Times>& t, const char* impl, bool cpu) {
       auto it = t.find(impl);
       return it == t.end() ? -1.0 : (cpu ? it->second.cpu : it->second.real);
@@ -643,14 +664,17 @@ class RatioReporter : public benchmark::ConsoleReporter {
       const double sf = cell(t, "splinefig", true), ca = cell(t, "cairo", true), ag = cell(t, "agg", true),
                    bl = cell(t, "blend2d", true);
       const double sf_wall = cell(t, "splinefig", false), mt_wall = cell(t, "splinefig-mt", false);
+      const double r_wall = cell(t, "rasterize", false), rmt_wall = cell(t, "rasterize-mt", false);
       const bool scaled = w == "A1" || w == "A3" || w == "B" || w == "C";
       char bl_cell[16];
       if (bl > 0) std::snprintf(bl_cell, sizeof bl_cell, "%.1f", bl); else std::snprintf(bl_cell, sizeof bl_cell, "%s", kHaveBlend2D ? "-" : "absent");
-      std::fprintf(out, "%-8s %11.1f %11.1f %11.1f %11s %9s %9s %10s %9s\n", w.c_str(), sf, ca, ag, bl_cell,
+      std::fprintf(out, "%-8s %11.1f %11.1f %11.1f %11s %9s %9s %10s %9s %10s\n", w.c_str(), sf, ca, ag, bl_cell,
                    ratio(sf, ca, 2).c_str(), ratio(sf, ag, 1.5).c_str(),
-                   kHaveBlend2D ? ratio(sf, bl, 1).c_str() : "absent", ratio(mt_wall, sf_wall, scaled ? 1.8 : 0).c_str());
+                   kHaveBlend2D ? ratio(sf, bl, 1).c_str() : "absent", ratio(mt_wall, sf_wall, scaled ? 1.8 : 0).c_str(),
+                   ratio(rmt_wall, r_wall, 0).c_str());
     }
-    std::fprintf(out, "* below the goal (2x Cairo, 1.5x AGG, 1x Blend2D; threads: 1.8x for A1, A3, B and C)\n");
+    std::fprintf(out, "* below the goal (2x Cairo, 1.5x AGG, 1x Blend2D; threads: 1.8x for A1, A3, B and C)\n"
+                      "threads: the whole drawing (recording the scene, then rasterize); rasterize: rasterize alone\n");
     if (!kHaveBlend2D) std::fprintf(out, "%s\n", kBlend2DAbsent);
   }
 
