@@ -389,8 +389,8 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
   auto first_block = [&](int row) { return block_of[static_cast<std::size_t>(row / kBandRows)]; };
   auto last_block = [&](int row_end) { return block_of[static_cast<std::size_t>((row_end - 1) / kBandRows)]; };
   // Local items met by two blocks count their work and the bands drawn from their pieces in a
-  // slot of their own, shared by the two blocks' threads.
-  constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
+  // slot shared by the two blocks' threads, numbered after the shared items' below.
+  constexpr std::uint32_t kNoSlot = Prepared::kNoWorkSlot;
   std::vector<std::uint8_t> local(n, 0);
   std::vector<std::uint32_t> local_slot(n, kNoSlot);
   std::uint32_t local_slots = 0;
@@ -405,8 +405,6 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
       shared.push_back(static_cast<std::uint32_t>(i));
     }
   }
-  std::vector<std::atomic<std::uint64_t>> local_spent(local_slots);
-  std::vector<std::atomic<int>> local_piece_bands(local_slots);
 
   // Shared items are prepared in runs of consecutive ones, each run into a geometry of its own. An
   // item's chains and vertices are the same in any run (they are appended in order and only
@@ -436,13 +434,16 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
   // Each shared item's sweep work over all blocks, against the one limit: an item is refused
   // exactly when its total passes the limit, whichever blocks and threads counted it (a block
   // stops once the total, with its own share, passes it; the totals of items drawn in full do
-  // not depend on the order). A local item is counted by its block, or by its two blocks in a
-  // slot of its own (above) in the same way. The first refused item is the one named: once an item is refused, later items are
+  // not depend on the order). A local item is counted by its block, or by its two blocks in its
+  // slot in the same way. The first refused item is the one named: once an item is refused, later items are
   // skipped, earlier ones still drawn in full, so the lowest index left is the first item over
   // the limit on any thread count.
   std::uint32_t slots = 0;
   for (Prepared& p : prep)
     if (!p.raster && !p.shape.simple && !p.shape.empty() && p.row1 > p.row0) p.work_slot = slots++;
+  for (std::uint32_t& slot : local_slot)
+    if (slot != kNoSlot) slot += slots;
+  slots += local_slots;
   std::vector<std::atomic<std::uint64_t>> spent(slots);
   std::vector<std::atomic<int>> slot_piece_bands(slots);
   std::vector<LazyPieces> lazy(slots);
@@ -481,6 +482,23 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
     Geometry geom;
     Prepared p;
   };
+  // Draws rows [r0, r1) of item i under the box filter. Its work counts against the limit in
+  // `slot` with the other blocks that draw it (kNoSlot: this block draws all of it, and the work
+  // is its own), where the bands drawn from its pieces are added too; `from_pieces` is this
+  // block's. False, with the item noted, once it is over the limit.
+  auto draw_box = [&](std::size_t i, const Geometry& g, const Prepared& p, LazyPieces* pieces, Scratch& sc, int r0, int r1,
+                      std::uint32_t slot, int& from_pieces) {
+    std::atomic<std::uint64_t>* total = slot == kNoSlot ? nullptr : &spent[slot];
+    const std::uint64_t used = total ? total->load() : 0;
+    if (used <= budget) {
+      const BandWork w = render_box(g, p, items[i], pieces, img, r0, r1, sc.band, sc.sweep, sc.ps, budget - used);
+      from_pieces = w.piece_bands;
+      if (total && w.piece_bands) slot_piece_bands[slot] += w.piece_bands;
+      if (!w.over && !(total && total->fetch_add(w.work) + w.work > budget)) return true;
+    }
+    note_over(i);
+    return false;
+  };
   std::vector<std::unique_ptr<Scratch>> scratch(static_cast<std::size_t>(nthreads));
   parallel_for(blocks, nthreads, [&](std::size_t b, int worker) {
     auto& s = scratch[static_cast<std::size_t>(worker)];
@@ -510,26 +528,11 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
           composite_raster(*p.raster, comp, img, r0, r1);
           continue;
         }
-        const std::uint32_t slot = local_slot[i];
-        std::atomic<std::uint64_t>* total = slot == kNoSlot ? nullptr : &local_spent[slot];
-        const std::uint64_t used = total ? total->load() : 0;
-        if (used > budget) {
-          note_over(i);
-          break;
-        }
         LazyPieces pieces;
-        const BandWork w = render_box(s->geom, p, items[i], eligible(i) ? &pieces : nullptr, img, r0, r1, s->band,
-                                      s->sweep, s->ps, budget - used);
-        if (w.over || (total && total->fetch_add(w.work) + w.work > budget)) {
-          note_over(i);
-          break;
-        }
-        if (!total) {
-          note_bands(i, p, w.piece_bands);
-        } else {
-          local_piece_bands[slot] += w.piece_bands;
-          if (report && p.row0 >= r0) item_bands[i] = (p.row1 - 1) / kBandRows - p.row0 / kBandRows + 1;  // one block
-        }
+        int from_pieces = 0;
+        if (!draw_box(i, s->geom, p, eligible(i) ? &pieces : nullptr, *s, r0, r1, local_slot[i], from_pieces)) break;
+        if (local_slot[i] == kNoSlot) note_bands(i, p, from_pieces);
+        else if (report && p.row0 >= r0) item_bands[i] = (p.row1 - 1) / kBandRows - p.row0 / kBandRows + 1;  // one block
         continue;
       }
       const Prepared& p = prep[k];
@@ -538,7 +541,13 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
         composite_raster(*p.raster, comp, img, r0, r1);
         continue;
       }
-      std::atomic<std::uint64_t>* total = p.work_slot == Prepared::kNoWorkSlot ? nullptr : &spent[p.work_slot];
+      if (box) {
+        int from_pieces = 0;
+        LazyPieces* pieces = p.work_slot != kNoSlot && eligible(i) ? &lazy[p.work_slot] : nullptr;
+        if (!draw_box(i, g, p, pieces, *s, r0, r1, p.work_slot, from_pieces)) break;
+        continue;
+      }
+      std::atomic<std::uint64_t>* total = p.work_slot == kNoSlot ? nullptr : &spent[p.work_slot];
       const std::uint64_t used = total ? total->load() : 0;
       if (used > budget) {
         note_over(i);
@@ -546,19 +555,11 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
       }
       bool over = false;
       std::uint64_t work = 0;
-      if (box) {
-        LazyPieces* pieces = total && eligible(i) ? &lazy[p.work_slot] : nullptr;
-        const BandWork w = render_box(g, p, items[i], pieces, img, r0, r1, s->band, s->sweep, s->ps, budget - used);
-        over = w.over;
-        work = w.work;
-        if (w.piece_bands) slot_piece_bands[p.work_slot] += w.piece_bands;
-      } else {
-        for (int y = r0; y < r1 && !over; y += kBandRows) {  // band by band, as one thread
-          s->sweep.set_budget(budget - used - std::min(budget - used, work));
-          render_filtered(g, p, grid, img, y, std::min(r1, y + kBandRows), s->fs, s->sweep);
-          over = s->sweep.over();
-          work += s->sweep.work();
-        }
+      for (int y = r0; y < r1 && !over; y += kBandRows) {  // band by band, as one thread
+        s->sweep.set_budget(budget - used - std::min(budget - used, work));
+        render_filtered(g, p, grid, img, y, std::min(r1, y + kBandRows), s->fs, s->sweep);
+        over = s->sweep.over();
+        work += s->sweep.work();
       }
       if (total && (over || total->fetch_add(work) + work > budget)) {
         note_over(i);
@@ -572,12 +573,10 @@ Image rasterize(const Scene& scene, int threads, RasterReport* report) {
   }
   if (report) {
     for (std::size_t i = 0; i < n; ++i)
-      if (local_slot[i] != kNoSlot) piece_bands[i] = local_piece_bands[local_slot[i]].load();
-  }
-  if (report)
+      if (local_slot[i] != kNoSlot) piece_bands[i] = slot_piece_bands[local_slot[i]].load();
     for (std::size_t k = 0; k < shared.size(); ++k)
-      if (prep[k].work_slot != Prepared::kNoWorkSlot)
-        note_bands(shared[k], prep[k], slot_piece_bands[prep[k].work_slot].load());
+      if (prep[k].work_slot != kNoSlot) note_bands(shared[k], prep[k], slot_piece_bands[prep[k].work_slot].load());
+  }
   finish();
   return img;
 }
